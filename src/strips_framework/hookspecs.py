@@ -1,0 +1,95 @@
+"""Every hook a plugin can implement, in one place.
+
+Hooks *register implementation classes*; they are called once, when the plugin manager is
+built, never inside search or proving loops (a pluggy call costs microseconds). The core
+keeps the classes in a :class:`~strips_framework.plugins.Registry`, the config picks one
+class of each kind by its ``name``, and the search calls the chosen objects directly.
+
+Every implementation class has a ``name`` class attribute and is an attrs class whose
+fields are its options: the config passes ``[prover.options]`` and the like as keyword
+arguments, and ``strips plugins`` lists the fields with their defaults.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import pluggy
+
+if TYPE_CHECKING:
+    from strips_framework.formats import ProblemLoader
+    from strips_framework.proving import TheoremProver
+    from strips_framework.search.components import (
+        DifferenceExtractor,
+        NodeEvaluator,
+        RelevanceFilter,
+        SearchStrategy,
+    )
+
+PROJECT = "strips_framework"
+hookspec = pluggy.HookspecMarker(PROJECT)
+hookimpl = pluggy.HookimplMarker(PROJECT)
+
+
+@hookspec
+def strips_register_provers() -> list[type[TheoremProver]]:
+    """Return theorem-prover classes.
+
+    A prover answers :class:`~strips_framework.proving.ProofTask` questions with a
+    :class:`~strips_framework.proving.ProofResult`: whether ``axioms ∪ negated_goal`` is
+    refuted, the parameter bindings of each refutation (answer extraction), and, when it
+    fails within the effort bound, the uncompleted proof (paper, III.A and III.C).
+    """
+
+
+@hookspec
+def strips_register_difference_extractors() -> list[type[DifferenceExtractor]]:
+    """Return difference-extractor classes.
+
+    A difference extractor turns a failed proof's uncompleted proof into the node's
+    *difference*: the clauses that operators must help resolve away (paper, III.C,
+    including its note that a large uncompleted proof may be cut down heuristically).
+    """
+
+
+@hookspec
+def strips_register_relevance_filters() -> list[type[RelevanceFilter]]:
+    """Return operator-relevance classes.
+
+    A relevance filter receives a difference and the operator schemata and returns the
+    relevant operator instances, best first: the candidates whose add lists mention the
+    difference's predicates, instantiated by resolving add-list clauses against difference
+    clauses (paper, III.C).
+    """
+
+
+@hookspec
+def strips_register_evaluators() -> list[type[NodeEvaluator]]:
+    """Return node-evaluator classes.
+
+    An evaluator scores a search node (lower is better); strategies expand the best-scored
+    node next (paper, II.B and V). An evaluator that never overestimates the number of
+    operator applications still needed, added to those made so far, sets
+    ``admissible = True`` so that optimal strategies can rely on it.
+    """
+
+
+@hookspec
+def strips_register_strategies() -> list[type[SearchStrategy]]:
+    """Return search-strategy classes.
+
+    A strategy searches from a problem's initial world model for a plan, using the prover,
+    difference extractor, relevance filter and evaluator it is given, within the limits of
+    the config; it returns a :class:`~strips_framework.search.result.SearchResult` with the
+    plan (if any), the search tree and the paper's Table 2 statistics.
+    """
+
+
+@hookspec
+def strips_register_loaders() -> list[type[ProblemLoader]]:
+    """Return problem-loader classes.
+
+    A loader reads files with the suffixes it declares in ``suffixes`` and returns a
+    :class:`~strips_framework.problem.Problem`; on bad input it raises
+    :class:`~strips_framework.errors.InputError` naming the file, line and what was expected.
+    """

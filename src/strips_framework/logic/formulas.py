@@ -1,0 +1,195 @@
+"""First-order formulas (wffs) as the parsers produce them and the clausifier consumes them.
+
+Inside formulas, quantified variables are named :class:`Var` objects; they become the
+clause-local integer variables of :mod:`strips_framework.logic.terms` only in clause form.
+Constants, parameters and function terms are the values of ``terms``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Union
+
+from attrs import field, frozen
+
+from strips_framework.logic.terms import EQUALITY, Param, Term
+
+
+@frozen
+class Var:
+    """A quantified variable inside a formula, such as ``x`` in ``exists x: AT(BOX1, x)``."""
+
+    name: str
+
+    def __str__(self) -> str:
+        return self.name
+
+
+def _tuple(items: object) -> tuple:
+    return tuple(items)  # type: ignore[arg-type]
+
+
+@frozen
+class Atomic:
+    """An atom ``(predicate, *args)`` used as a formula; ``("=", s, t)`` is equality."""
+
+    atom: tuple
+
+
+@frozen
+class Truth:
+    """The constants ``true`` and ``false``."""
+
+    value: bool
+
+
+@frozen
+class Not:
+    body: Formula
+
+
+@frozen
+class And:
+    parts: tuple[Formula, ...] = field(converter=_tuple)
+
+
+@frozen
+class Or:
+    parts: tuple[Formula, ...] = field(converter=_tuple)
+
+
+@frozen
+class Implies:
+    premise: Formula
+    conclusion: Formula
+
+
+@frozen
+class Iff:
+    left: Formula
+    right: Formula
+
+
+@frozen
+class Forall:
+    variables: tuple[Var, ...] = field(converter=_tuple)
+    body: Formula = field()
+
+
+@frozen
+class Exists:
+    variables: tuple[Var, ...] = field(converter=_tuple)
+    body: Formula = field()
+
+
+Formula = Union[Atomic, Truth, Not, And, Or, Implies, Iff, Forall, Exists]
+
+
+def atoms_of(formula: Formula) -> Iterator[tuple]:
+    """Yield every atom of ``formula`` (with repetitions), left to right."""
+    if isinstance(formula, Atomic):
+        yield formula.atom
+    elif isinstance(formula, Not):
+        yield from atoms_of(formula.body)
+    elif isinstance(formula, (And, Or)):
+        for part in formula.parts:
+            yield from atoms_of(part)
+    elif isinstance(formula, Implies):
+        yield from atoms_of(formula.premise)
+        yield from atoms_of(formula.conclusion)
+    elif isinstance(formula, Iff):
+        yield from atoms_of(formula.left)
+        yield from atoms_of(formula.right)
+    elif isinstance(formula, (Forall, Exists)):
+        yield from atoms_of(formula.body)
+
+
+def predicates_of(formula: Formula) -> set[tuple[str, int]]:
+    """The ``(name, arity)`` of every predicate in ``formula``, equality excluded."""
+    return {(a[0], len(a) - 1) for a in atoms_of(formula) if a[0] != EQUALITY}
+
+
+def _term_params(term: Term | Var) -> Iterator[Param]:
+    if isinstance(term, Param):
+        yield term
+    elif type(term) is tuple:
+        for arg in term[1:]:
+            yield from _term_params(arg)
+
+
+def params_in(formula: Formula) -> set[Param]:
+    return {p for atom in atoms_of(formula) for arg in atom[1:] for p in _term_params(arg)}
+
+
+def substitute_params(formula: Formula, binding: dict[Param, Term]) -> Formula:
+    """Replace parameters by terms everywhere in ``formula`` (an instance of a wff schema)."""
+
+    def term(t: Term | Var) -> Term | Var:
+        if isinstance(t, Param):
+            return binding.get(t, t)
+        if type(t) is tuple:
+            return (t[0], *map(term, t[1:]))
+        return t
+
+    def walk(f: Formula) -> Formula:
+        if isinstance(f, Atomic):
+            return Atomic((f.atom[0], *map(term, f.atom[1:])))
+        if isinstance(f, Truth):
+            return f
+        if isinstance(f, Not):
+            return Not(walk(f.body))
+        if isinstance(f, And):
+            return And(map(walk, f.parts))
+        if isinstance(f, Or):
+            return Or(map(walk, f.parts))
+        if isinstance(f, Implies):
+            return Implies(walk(f.premise), walk(f.conclusion))
+        if isinstance(f, Iff):
+            return Iff(walk(f.left), walk(f.right))
+        if isinstance(f, Forall):
+            return Forall(f.variables, walk(f.body))
+        return Exists(f.variables, walk(f.body))
+
+    return walk(formula) if binding else formula
+
+
+def formula_to_str(formula: Formula) -> str:
+    """ASCII text of a formula in the syntax of :mod:`strips_framework.logic.parser`."""
+
+    def term(t: Term | Var) -> str:
+        if isinstance(t, (Var, Param)):
+            return t.name
+        if type(t) is tuple:
+            return f"{t[0]}({', '.join(map(term, t[1:]))})"
+        return str(t)
+
+    def atom(a: tuple) -> str:
+        if a[0] == EQUALITY:
+            return f"{term(a[1])} = {term(a[2])}"
+        return a[0] if len(a) == 1 else f"{a[0]}({', '.join(map(term, a[1:]))})"
+
+    def walk(f: Formula, parent: int) -> str:
+        # Precedence: quantifiers 0 < iff 1 < implies 2 < or 3 < and 4 < not 5.
+        if isinstance(f, Atomic):
+            return atom(f.atom)
+        if isinstance(f, Truth):
+            return "true" if f.value else "false"
+        if isinstance(f, Not):
+            if isinstance(f.body, Atomic) and f.body.atom[0] == EQUALITY:
+                return f"{term(f.body.atom[1])} != {term(f.body.atom[2])}"
+            return "~" + walk(f.body, 5)
+        if isinstance(f, And):
+            text, level = " & ".join(walk(p, 5) for p in f.parts), 4
+        elif isinstance(f, Or):
+            text, level = " | ".join(walk(p, 4) for p in f.parts), 3
+        elif isinstance(f, Implies):
+            text, level = f"{walk(f.premise, 3)} -> {walk(f.conclusion, 2)}", 2
+        elif isinstance(f, Iff):
+            text, level = f"{walk(f.left, 2)} <-> {walk(f.right, 2)}", 1
+        else:
+            word = "forall" if isinstance(f, Forall) else "exists"
+            names = ", ".join(v.name for v in f.variables)
+            text, level = f"{word} {names}: {walk(f.body, 0)}", 0
+        return f"({text})" if level < parent else text
+
+    return walk(formula, 0)

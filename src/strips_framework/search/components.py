@@ -1,0 +1,66 @@
+"""The pluggable parts of a search, as the strategies see them.
+
+Each is registered by class through a hook (see :mod:`strips_framework.hookspecs`) and
+instantiated once per run from the config; strategies call the methods directly.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, ClassVar, Protocol
+
+if TYPE_CHECKING:
+    from strips_framework.logic.clauses import Clause
+    from strips_framework.problem import OperatorSchema, Problem
+    from strips_framework.proving import ProofResult, TheoremProver
+    from strips_framework.search.limits import Limits
+    from strips_framework.search.node import Difference, Node, RelevantInstance
+    from strips_framework.search.result import SearchResult
+
+
+class DifferenceExtractor(Protocol):
+    name: ClassVar[str]
+
+    def extract(self, result: ProofResult, negated_goal: Sequence[Clause]) -> Difference:
+        """The difference of a failed proof attempt (its uncompleted proof, edited)."""
+        ...
+
+
+class RelevanceFilter(Protocol):
+    name: ClassVar[str]
+
+    def relevant(
+        self, difference: Difference, operators: Sequence[OperatorSchema], fresh_tag: int
+    ) -> list[RelevantInstance]:
+        """Relevant operator instances for ``difference``, best first.
+
+        ``fresh_tag`` is a tag no parameter in ``difference`` carries; schema parameters are
+        renamed to it (and upward) so they cannot clash with the goal's own parameters.
+        """
+        ...
+
+
+class NodeEvaluator(Protocol):
+    name: ClassVar[str]
+    #: True when ``evaluate`` is a lower bound on the cost of a plan through the node.
+    admissible: ClassVar[bool]
+
+    def evaluate(self, node: Node) -> float:
+        """Score ``node``; strategies expand the lowest score first."""
+        ...
+
+
+class SearchStrategy(Protocol):
+    name: ClassVar[str]
+
+    def search(
+        self,
+        problem: Problem,
+        prover: TheoremProver,
+        differences: DifferenceExtractor,
+        relevance: RelevanceFilter,
+        evaluator: NodeEvaluator,
+        limits: Limits,
+    ) -> SearchResult:
+        """Search for a plan for ``problem``."""
+        ...

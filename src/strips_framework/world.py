@@ -1,0 +1,83 @@
+"""World models as the paper stores them (III.B, III.D).
+
+All models share one :class:`InitialModel` (M0), which is never copied. A
+:class:`WorldModel` is M0 plus two short lists: ``deletions`` (indices of M0 clauses no
+longer present) and ``additions`` (ground atoms present but not in M0). A derived clause
+of M0 is visible only while every primitive clause it rests on is still present.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from attrs import field, frozen
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Atom
+
+
+@frozen(eq=False)
+class InitialModel:
+    """M0: its clauses, and for each derived clause the indices of its supports.
+
+    ``facts`` maps each ground unit fact of M0 to its index in ``clauses``, so operators
+    can find what to delete without scanning.
+    """
+
+    clauses: tuple[Clause, ...] = field(converter=tuple)
+    supports: dict[int, frozenset[int]] = field(factory=dict)
+    facts: dict[Atom, int] = field(init=False)
+
+    def __attrs_post_init__(self) -> None:
+        facts = {
+            c.literals[0][1]: i
+            for i, c in enumerate(self.clauses)
+            if c.is_unit and c.literals[0][0] and i not in self.supports
+        }
+        object.__setattr__(self, "facts", facts)
+
+
+@frozen(cache_hash=True)
+class WorldModel:
+    """M0 with ``deletions`` (indices into M0) and ``additions`` (ground atoms)."""
+
+    initial: InitialModel = field(eq=False, hash=False, repr=False)
+    deletions: frozenset[int] = frozenset()
+    additions: frozenset[Atom] = frozenset()
+
+    def clauses(self) -> Iterator[Clause]:
+        """The visible clauses: M0 less deletions and stale derived clauses, plus additions."""
+        deleted = self.deletions
+        supports = self.initial.supports
+        for i, clause in enumerate(self.initial.clauses):
+            if i in deleted:
+                continue
+            rests_on = supports.get(i)
+            if rests_on is not None and not rests_on.isdisjoint(deleted):
+                continue
+            yield clause
+        for atom in sorted(self.additions, key=repr):
+            yield Clause(((True, atom),), label="added")
+
+    def holds(self, atom: Atom) -> bool:
+        """Whether the ground primitive ``atom`` is present as a fact (no reasoning)."""
+        if atom in self.additions:
+            return True
+        index = self.initial.facts.get(atom)
+        return index is not None and index not in self.deletions
+
+    def facts(self) -> Iterator[Atom]:
+        """The ground facts present: M0's undeleted facts, then the additions."""
+        for atom, index in self.initial.facts.items():
+            if index not in self.deletions:
+                yield atom
+        yield from self.additions
+
+    def changed(self, deleted: frozenset[Atom], added: frozenset[Atom]) -> WorldModel:
+        """The model after deleting then adding ground atoms (III.D)."""
+        facts = self.initial.facts
+        new_deletions = self.deletions | {facts[a] for a in deleted if a in facts}
+        additions = (self.additions - deleted) | {a for a in added if a not in facts}
+        # An atom of M0 that was deleted and is added back is visible again.
+        revived = {facts[a] for a in added if a in facts}
+        return WorldModel(self.initial, new_deletions - revived, frozenset(additions))
