@@ -75,8 +75,9 @@ class OperatorInstance:
         return f"{self.schema.name}({', '.join(map(term_to_str, self.arguments()))})"
 
     def ipc(self) -> str:
-        """The IPC plan-file form: ``(name arg ...)``, lower case as planners print it."""
-        return "(" + " ".join([self.schema.name, *map(term_to_str, self.arguments())]).lower() + ")"
+        """The IPC plan-file form ``(name arg ...)``; names keep the case the user wrote
+        (plan validators compare names case-insensitively)."""
+        return "(" + " ".join([self.schema.name, *map(term_to_str, self.arguments())]) + ")"
 
 
 def _matches(pattern: Term, term: Term) -> bool:

@@ -13,7 +13,9 @@ from collections.abc import Iterator
 from attrs import field, frozen
 
 from strips_framework.logic.clauses import Clause
+from strips_framework.logic.cnf import SkolemNames, clausify
 from strips_framework.logic.terms import Atom
+from strips_framework.problem import Problem
 
 
 @frozen(eq=False)
@@ -81,3 +83,16 @@ class WorldModel:
         # An atom of M0 that was deleted and is added back is visible again.
         revived = {facts[a] for a in added if a in facts}
         return WorldModel(self.initial, new_deletions - revived, frozenset(additions))
+
+
+def initial_model(problem: Problem, skolem: SkolemNames) -> InitialModel:
+    """M0 of ``problem``: facts, clausified axioms, and derived facts with their supports."""
+    clauses = [Clause(((True, atom),), label="fact") for atom in problem.facts]
+    index = {atom: i for i, atom in enumerate(problem.facts)}
+    for number, axiom in enumerate(problem.axioms, start=1):
+        clauses.extend(clausify(axiom, label=f"axiom {number}", skolem=skolem))
+    supports: dict[int, frozenset[int]] = {}
+    for fact in problem.derived:
+        supports[len(clauses)] = frozenset(index[atom] for atom in fact.supports)
+        clauses.append(Clause(((True, fact.atom),), label="derived"))
+    return InitialModel(clauses, supports)

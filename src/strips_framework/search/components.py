@@ -30,13 +30,9 @@ class RelevanceFilter(Protocol):
     name: ClassVar[str]
 
     def relevant(
-        self, difference: Difference, operators: Sequence[OperatorSchema], fresh_tag: int
+        self, difference: Difference, operators: Sequence[OperatorSchema]
     ) -> list[RelevantInstance]:
-        """Relevant operator instances for ``difference``, best first.
-
-        ``fresh_tag`` is a tag no parameter in ``difference`` carries; schema parameters are
-        renamed to it (and upward) so they cannot clash with the goal's own parameters.
-        """
+        """Relevant operator instances for ``difference``, best first."""
         ...
 
 

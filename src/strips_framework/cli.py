@@ -1,0 +1,120 @@
+"""The ``strips`` command: solve problems, prove TPTP problems, list plugins."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import warnings
+from collections.abc import Sequence
+from pathlib import Path
+
+from strips_framework.config import Config
+from strips_framework.errors import StripsError
+from strips_framework.planner import Planner
+from strips_framework.plugins import KINDS
+from strips_framework.search.result import SearchResult
+from strips_framework.tree_dot import search_tree_to_dot
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="strips",
+        description="STRIPS (Fikes & Nilsson, 1971): means-ends planning over first-order "
+        "world models, with pluggable provers, evaluators and strategies.",
+    )
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    solve = commands.add_parser("solve", help="search for a plan")
+    solve.add_argument("problem", type=Path, help="problem file (e.g. examples/three-boxes.strips)")
+    solve.add_argument("--config", type=Path, help="TOML config (default: built-in defaults)")
+    solve.add_argument("--plan-file", type=Path, help="also write the plan here, IPC style")
+    solve.add_argument("--json", action="store_true", help="print the result as JSON")
+    solve.add_argument("--tree", type=Path, help="write the search tree as Graphviz DOT")
+
+    prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
+    prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
+    prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
+    prove.add_argument("--effort", type=int, help="prover effort (default: [limits] effort)")
+
+    commands.add_parser("plugins", help="list the registered implementations and options")
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    warnings.formatwarning = lambda message, *_: f"strips: warning: {message}\n"
+    try:
+        config = Config.from_file(args.config) if getattr(args, "config", None) else None
+        planner = Planner.create(config)
+        if args.command == "solve":
+            return _solve(planner, args)
+        if args.command == "prove":
+            return _prove(planner, args)
+        return _plugins(planner)
+    except StripsError as error:
+        print(f"strips: error: {error}", file=sys.stderr)
+        return 2
+
+
+def _plan_lines(result: SearchResult) -> list[str]:
+    return [step.ipc() for step in result.plan or ()]
+
+
+def _statistics_lines(result: SearchResult) -> list[str]:
+    s = result.statistics
+    return [
+        f"; status: {result.status}",
+        f"; plan length: {len(result.plan) if result.plan is not None else '-'}",
+        f"; nodes: {s.nodes} in the tree, {s.path_nodes} on the solution path",
+        f"; operator applications: {s.applications} in the tree, "
+        f"{s.path_applications} on the solution path",
+        f"; time: {s.seconds:.3f} s, proving {s.proving_seconds:.3f} s "
+        f"({100 * s.proving_share:.0f}%), {s.proof_attempts} proof attempts",
+        f"; expanded: {s.nodes}",
+    ]
+
+
+def _solve(planner: Planner, args: argparse.Namespace) -> int:
+    problem = planner.load(args.problem)
+    result = planner.solve(problem)
+    if args.tree:
+        args.tree.write_text(search_tree_to_dot(result, f"{problem.name}: search tree"))
+    if args.plan_file and result.plan is not None:
+        args.plan_file.write_text("\n".join(_plan_lines(result)) + f"\n; cost = {len(result.plan)} (unit cost)\n")
+    if args.json:
+        payload = {
+            "problem": problem.name,
+            "status": result.status,
+            "plan": [str(step) for step in result.plan] if result.plan is not None else None,
+            "statistics": result.statistics.as_dict(),
+            "config": {kind: choice.name for kind, choice in planner.config.choices.items()},
+        }
+        print(json.dumps(payload, indent=2))
+    else:
+        print("\n".join(_plan_lines(result) + _statistics_lines(result)))
+    return 0 if result.solved else 1
+
+
+def _prove(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.formats.tptp import load_tptp, szs_report
+
+    problem = load_tptp(args.problem)
+    effort = args.effort if args.effort is not None else planner.config.limits.effort
+    result = planner.prover().prove(problem.task(effort=effort))
+    print(szs_report(problem, result))
+    return 0
+
+
+def _plugins(planner: Planner) -> int:
+    for kind, (_, words) in KINDS.items():
+        print(f"{words}s:")
+        for registration in planner.registry.registrations(kind):
+            origin = registration.distribution or "builtin"
+            print(f"  {registration.name:<20} {origin} ({registration.plugin})")
+            doc = (registration.cls.__doc__ or "").strip().splitlines()
+            if doc:
+                print(f"      {doc[0]}")
+            for option in registration.options():
+                print(f"      {option.name} = {option.default!r}")
+    return 0

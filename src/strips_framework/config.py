@@ -1,0 +1,146 @@
+"""The TOML config (``strips.toml``): which implementations to use, their options, limits.
+
+    [strategy]
+    name = "means-ends"          # every key but 'name' is an option of the chosen class
+    max_goals = 8
+
+    [prover]
+    name = "resolution"
+
+    [evaluator]
+    name = "paper"
+
+    [limits]
+    time = 60        # wall-clock seconds
+    nodes = 10000    # nodes generated
+    effort = 300     # prover effort per proof attempt
+
+Every table is optional; missing ones take the defaults in :data:`DEFAULT_CHOICES`.
+Mistakes are reported with their key path and what was expected.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import attrs
+from attrs import frozen
+
+from strips_framework.errors import ConfigError
+from strips_framework.plugins import KINDS, Registration, Registry
+from strips_framework.search.limits import Limits
+
+COMPONENTS = ("strategy", "prover", "difference", "relevance", "evaluator")
+DEFAULT_CHOICES = {
+    "strategy": "means-ends",
+    "prover": "resolution",
+    "difference": "uncompleted-proof",
+    "relevance": "add-list",
+    "evaluator": "paper",
+}
+
+
+@frozen
+class Choice:
+    """An implementation picked by name, with the options to build it."""
+
+    kind: str
+    name: str
+    options: dict[str, Any] = attrs.field(factory=dict)
+
+
+@frozen
+class Config:
+    choices: dict[str, Choice]
+    limits: Limits
+    source: str = "<defaults>"
+
+    @classmethod
+    def default(cls) -> Config:
+        return cls.from_dict({})
+
+    @classmethod
+    def from_file(cls, path: Path) -> Config:
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as error:
+            raise ConfigError(f"{path}: cannot read config: {error.strerror}") from None
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as error:
+            raise ConfigError(f"{path}: not valid TOML: {error}") from None
+        return cls.from_dict(data, str(path))
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], source: str = "<config>") -> Config:
+        known = (*COMPONENTS, "limits")
+        for key in data:
+            if key not in known:
+                raise ConfigError(
+                    f"{source}: unknown key '{key}' (expected one of: {', '.join(known)})"
+                )
+        choices = {}
+        for kind in COMPONENTS:
+            table = data.get(kind, {})
+            if isinstance(table, str):  # shorthand: prover = "resolution"
+                table = {"name": table}
+            if not isinstance(table, dict):
+                raise ConfigError(
+                    f"{source}: '{kind}' must be a table or an implementation name, "
+                    f"got {_type_name(table)}"
+                )
+            options = dict(table)
+            name = options.pop("name", DEFAULT_CHOICES[kind])
+            if not isinstance(name, str):
+                raise ConfigError(f"{source}: '{kind}.name' must be a string, got {_type_name(name)}")
+            choices[kind] = Choice(kind, name, options)
+        limits_table = data.get("limits", {})
+        if not isinstance(limits_table, dict):
+            raise ConfigError(f"{source}: 'limits' must be a table, got {_type_name(limits_table)}")
+        limits = _instantiate(Limits, limits_table, "limits", source)
+        return cls(choices, limits, source)
+
+    def build(self, registry: Registry, kind: str) -> Any:
+        """An instance of the implementation chosen for ``kind``, with its options."""
+        choice = self.choices[kind]
+        registration = registry.get(kind, choice.name)
+        return _instantiate(registration.cls, choice.options, kind, self.source, registration)
+
+
+def _type_name(value: object) -> str:
+    return {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
+            int: "an integer", float: "a float"}.get(type(value), type(value).__name__)
+
+
+def _instantiate(
+    cls: type,
+    options: dict[str, Any],
+    path: str,
+    source: str,
+    registration: Registration | None = None,
+) -> Any:
+    """``cls(**options)``, with wrong keys and values reported by key path."""
+    what = f"{KINDS[registration.kind][1]} '{registration.name}'" if registration else f"'{path}'"
+    fields = {a.name: a for a in attrs.fields(cls) if a.init} if attrs.has(cls) else {}
+    for key in options:
+        if key not in fields:
+            expected = ", ".join(sorted(fields)) or "none"
+            raise ConfigError(
+                f"{source}: unknown key '{path}.{key}': {what} has no option '{key}' "
+                f"(options: {expected})"
+            )
+    for key, value in options.items():
+        default = fields[key].default
+        if type(default) is float and type(value) is int:
+            options = {**options, key: float(value)}
+    try:
+        return cls(**options)
+    except (TypeError, ValueError) as error:
+        key = next((a.name for a in error.args if isinstance(a, attrs.Attribute)), None)
+        if key is None:
+            key = next((k for k in options if f"'{k}'" in str(error.args[0])), None)
+        where = f"'{path}.{key}'" if key else f"'{path}'"
+        value = f" (got {options[key]!r})" if key in options else ""
+        raise ConfigError(f"{source}: bad value for {where}: {error.args[0]}{value}") from None

@@ -1,0 +1,50 @@
+"""The typed facade over the plugin registry: load a problem, build the configured
+components, and search. The CLI, the tests and library users all go through it."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from pathlib import Path
+
+from attrs import frozen
+
+from strips_framework.config import Config
+from strips_framework.errors import InputError
+from strips_framework.plugins import Registry
+from strips_framework.problem import Problem
+from strips_framework.proving import TheoremProver
+from strips_framework.search.result import SearchResult
+
+
+@frozen
+class Planner:
+    registry: Registry
+    config: Config
+
+    @classmethod
+    def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
+        return cls(Registry.from_plugins(extra_plugins), config or Config.default())
+
+    def load(self, path: Path) -> Problem:
+        """Read a problem file with the loader registered for its suffix."""
+        if not path.is_file():
+            raise InputError(str(path), 0, None, "no such problem file")
+        loader = self.registry.loader_for(path.suffix).cls()
+        return loader.load(path)
+
+    def prover(self) -> TheoremProver:
+        return self.config.build(self.registry, "prover")
+
+    def solve(self, problem: Problem) -> SearchResult:
+        """Search for a plan with the strategy, prover, difference extractor, relevance
+        filter and evaluator of the config."""
+        build = self.config.build
+        strategy = build(self.registry, "strategy")
+        return strategy.search(
+            problem,
+            build(self.registry, "prover"),
+            build(self.registry, "difference"),
+            build(self.registry, "relevance"),
+            build(self.registry, "evaluator"),
+            self.config.limits,
+        )

@@ -1,0 +1,122 @@
+"""A* over world models: the optimal strategy to compare means-ends analysis with.
+
+It works on the same world models, operators and prover as the STRIPS strategy but
+searches forward: a node's successors are all applicable operator instances, found by
+proving each precondition schema with answer extraction for its parameters (parameters
+that only the effects mention range over the problem's constants). Nodes are expanded in
+order of the evaluator's score and the goal is tested when a node is expanded, so with an
+admissible evaluator such as ``breadth-first`` the first plan found is a shortest one.
+"""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import warnings
+from collections.abc import Iterator
+from typing import ClassVar
+
+from attrs import field, frozen, validators
+
+from strips_framework.hookspecs import hookimpl
+from strips_framework.operators import OperatorInstance
+from strips_framework.problem import Problem
+from strips_framework.proving import TheoremProver
+from strips_framework.search.components import (
+    DifferenceExtractor,
+    NodeEvaluator,
+    RelevanceFilter,
+)
+from strips_framework.search.goal_prover import GoalProver
+from strips_framework.search.limits import Limits
+from strips_framework.search.node import Goal, Node
+from strips_framework.search.result import EXHAUSTED, SOLVED, SearchResult
+from strips_framework.search.tree import LimitReached, SearchTree
+from strips_framework.world import WorldModel
+
+
+@frozen
+class AStarSearch:
+    """Forward A* (best-first on the evaluator's score) with duplicate detection.
+
+    ``max_answers`` bounds the applicable instances taken from one precondition proof.
+    """
+
+    name: ClassVar[str] = "astar"
+    max_answers: int = field(default=256, validator=[validators.instance_of(int), validators.gt(0)])
+
+    def search(
+        self,
+        problem: Problem,
+        prover: TheoremProver,
+        differences: DifferenceExtractor,
+        relevance: RelevanceFilter,
+        evaluator: NodeEvaluator,
+        limits: Limits,
+    ) -> SearchResult:
+        if not evaluator.admissible:
+            warnings.warn(
+                f"evaluator {evaluator.name!r} is not admissible: the plan A* finds with it "
+                "may not be optimal",
+                stacklevel=2,
+            )
+        goal_prover = GoalProver(problem, prover, limits.effort)
+        tree = SearchTree(limits, goal_prover)
+        top = (Goal(problem.goal),)
+
+        def make(
+            model: WorldModel,
+            parent: Node | None,
+            plan: tuple[OperatorInstance, ...],
+            applied: OperatorInstance | None = None,
+        ) -> Node:
+            node = tree.new_node(model, top, parent, plan, applied)
+            result = goal_prover.prove(model, problem.goal)
+            if not result.proved:
+                node.difference = differences.extract(result, goal_prover.negated(problem.goal))
+            return node
+
+        queue: list[tuple[float, int, Node]] = []
+        counter = itertools.count()
+        best_cost: dict[WorldModel, int] = {}
+        try:
+            root = make(goal_prover.root_model(), None, ())
+            heapq.heappush(queue, (evaluator.evaluate(root), next(counter), root))
+            while queue:
+                tree.check_time()
+                _, _, node = heapq.heappop(queue)
+                if node.difference is None:
+                    return tree.result(SOLVED, node)
+                if best_cost.get(node.model, node.cost + 1) <= node.cost:
+                    continue
+                best_cost[node.model] = node.cost
+                for instance in self._applicable(problem, goal_prover, node.model):
+                    model = instance.apply(node.model)
+                    if best_cost.get(model, node.cost + 2) <= node.cost + 1:
+                        continue
+                    child = make(model, node, (*node.plan, instance), instance)
+                    heapq.heappush(queue, (evaluator.evaluate(child), next(counter), child))
+        except LimitReached as limit:
+            return tree.result(limit.status, None)
+        return tree.result(EXHAUSTED, None)
+
+    def _applicable(
+        self, problem: Problem, goal_prover: GoalProver, model: WorldModel
+    ) -> Iterator[OperatorInstance]:
+        """Every ground instance whose precondition the prover proves in ``model``."""
+        seen: set[OperatorInstance] = set()
+        for schema in problem.operators:
+            result = goal_prover.prove(model, schema.precondition, self.max_answers)
+            for answer in result.answers:
+                partial = OperatorInstance(schema, [(p, t) for p, t in answer if p in schema.parameters])
+                free = [p for p in schema.parameters if p not in partial.binding_map()]
+                for values in itertools.product(problem.constants, repeat=len(free)):
+                    instance = partial.bind(dict(zip(free, values)))
+                    if instance.is_ground and instance not in seen:
+                        seen.add(instance)
+                        yield instance
+
+
+@hookimpl
+def strips_register_strategies() -> list[type]:
+    return [AStarSearch]

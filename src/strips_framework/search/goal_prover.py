@@ -1,0 +1,64 @@
+"""Asking the configured prover about goal wffs in world models, with the bookkeeping the
+searches need: clause forms computed once per goal, answers cached per (model, goal), and
+the time spent proving measured for the paper's Table 2."""
+
+from __future__ import annotations
+
+import time
+
+from attrs import define, field
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.cnf import SkolemNames, negated_goal_clauses
+from strips_framework.logic.formulas import Formula
+from strips_framework.problem import Problem
+from strips_framework.proving import ProofResult, ProofTask, TheoremProver
+from strips_framework.world import InitialModel, WorldModel, initial_model
+
+
+@define
+class GoalProver:
+    """One search's access to the prover."""
+
+    problem: Problem
+    prover: TheoremProver
+    effort: int
+    skolem: SkolemNames = field(factory=SkolemNames)
+    initial: InitialModel = field(init=False)
+    seconds: float = 0.0
+    attempts: int = 0
+    _negations: dict[Formula, tuple[Clause, ...]] = field(factory=dict)
+    _cache: dict[tuple[WorldModel, Formula, int], ProofResult] = field(factory=dict)
+
+    def __attrs_post_init__(self) -> None:
+        self.initial = initial_model(self.problem, self.skolem)
+
+    def root_model(self) -> WorldModel:
+        return WorldModel(self.initial)
+
+    def negated(self, goal: Formula) -> tuple[Clause, ...]:
+        """The clauses of ¬goal (computed once per goal wff)."""
+        clauses = self._negations.get(goal)
+        if clauses is None:
+            clauses = tuple(negated_goal_clauses(goal, self.skolem))
+            self._negations[goal] = clauses
+        return clauses
+
+    def prove(self, model: WorldModel, goal: Formula, max_answers: int = 1) -> ProofResult:
+        key = (model, goal, max_answers)
+        cached = self._cache.get(key)
+        if cached is not None:
+            return cached
+        task = ProofTask(
+            axioms=tuple(model.clauses()),
+            negated_goal=self.negated(goal),
+            effort=self.effort,
+            max_answers=max_answers,
+            unique_names=self.problem.unique_names,
+        )
+        started = time.perf_counter()
+        result = self.prover.prove(task)
+        self.seconds += time.perf_counter() - started
+        self.attempts += 1
+        self._cache[key] = result
+        return result
