@@ -1,0 +1,118 @@
+"""Generating inferences: binary resolution and factoring, with the paper's parameter rules.
+
+Every inference starts from a substitution seeded with the premises' parameter bindings
+(:func:`merge_bindings`), so a parameter bound in one premise is bound in the other too and
+two premises that bound it differently produce nothing. The unifier then extends it, and
+:func:`build` applies it to the surviving literals, renumbers variables and records every
+parameter binding in the conclusion, which is how "a binding made in one step holds for all
+descendants" (paper, III.A).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+
+from strips_framework.logic.clauses import Literal
+from strips_framework.logic.terms import Param, Term
+from strips_framework.logic.unify import Substitution, substitute, unify
+
+from strips_resolution_prover.pclause import Bindings, PClause, binding_key
+
+#: Offset added to the given clause's variables; processed clauses number theirs from 0, and
+#: no clause has this many variables, so one renaming of the given clause serves every partner.
+RENAME_OFFSET = 1 << 20
+
+
+def merge_bindings(left: Bindings, right: Bindings) -> Substitution | None:
+    """The substitution both premises' bindings impose, or ``None`` when they conflict."""
+    subst: Substitution = dict(left)
+    for param, value in right:
+        if unify(param, value, subst) is None:
+            return None
+    return subst
+
+
+def instantiate(term: Term, subst: Substitution, numbering: dict[int, int]) -> Term:
+    """Apply ``subst`` and renumber the remaining variables in one pass."""
+    kind = type(term)
+    if kind is int or kind is Param:
+        bound = subst.get(term)
+        if bound is not None:
+            return instantiate(bound, subst, numbering)
+        if kind is Param:
+            return term
+        number = numbering.get(term)
+        if number is None:
+            number = numbering[term] = len(numbering)
+        return number
+    if kind is tuple:
+        return (term[0], *[instantiate(arg, subst, numbering) for arg in term[1:]])
+    return term
+
+
+def build(
+    literals: Iterable[Literal], subst: Substitution, parents: tuple[int, ...]
+) -> PClause | None:
+    """The conclusion ``literals``·``subst``, or ``None`` when it is a tautology."""
+    numbering: dict[int, int] = {}
+    out: list[Literal] = []
+    seen: set[Literal] = set()
+    for positive, atom in literals:
+        literal = (positive, instantiate(atom, subst, numbering))
+        if literal in seen:
+            continue
+        if (not positive, literal[1]) in seen:
+            return None
+        seen.add(literal)
+        out.append(literal)
+    bindings = tuple(
+        sorted(
+            ((key, substitute(key, subst)) for key in subst if type(key) is Param),
+            key=binding_key,
+        )
+    )
+    return PClause(tuple(out), len(numbering), bindings, sos=True, parents=parents)
+
+
+def resolvents(
+    given: PClause,
+    renamed: tuple[Literal, ...],
+    partners: dict[tuple[bool, str, int], list[tuple[PClause, int]]],
+) -> Iterator[PClause]:
+    """Binary resolvents of the given clause (renamed apart) with indexed partners."""
+    for i, (positive, atom) in enumerate(renamed):
+        entries = partners.get((not positive, atom[0], len(atom)))
+        if not entries:
+            continue
+        rest = renamed[:i] + renamed[i + 1 :]
+        for partner, j in entries:
+            if partner.dead:
+                continue
+            if given.bindings or partner.bindings:
+                subst = merge_bindings(given.bindings, partner.bindings)
+                if subst is None:
+                    continue
+            else:
+                subst = {}
+            if unify(atom, partner.literals[j][1], subst) is None:
+                continue
+            others = partner.literals
+            clause = build(rest + others[:j] + others[j + 1 :], subst, (given.id, partner.id))
+            if clause is not None:
+                yield clause
+
+
+def factors(given: PClause) -> Iterator[PClause]:
+    """Factors of ``given``: two literals of the same sign and predicate unified into one."""
+    literals = given.literals
+    for i, (positive, atom) in enumerate(literals):
+        for j in range(i + 1, len(literals)):
+            other_positive, other = literals[j]
+            if other_positive is not positive or other[0] != atom[0] or len(other) != len(atom):
+                continue
+            subst: Substitution = dict(given.bindings)
+            if unify(atom, other, subst) is None:
+                continue
+            clause = build(literals[:j] + literals[j + 1 :], subst, (given.id,))
+            if clause is not None:
+                yield clause

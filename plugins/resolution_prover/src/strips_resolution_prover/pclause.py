@@ -1,0 +1,133 @@
+"""The prover's working clause: a slotted record built for the inner loop.
+
+:class:`~strips_framework.logic.clauses.Clause` is the public, validated value; creating one
+runs attrs converters, which is too slow for the tens of thousands of clauses a TPTP problem
+generates. Inside the loop clauses are :class:`PClause` records; they are converted back only
+for results (proof, uncompleted proof).
+
+Invariants every ``PClause`` keeps:
+- variables are numbered ``0 .. nvars-1`` in order of first occurrence, so renaming apart
+  is adding an offset and syntactically equal clauses have equal literal tuples;
+- no literal occurs twice;
+- a parameter bound in ``bindings`` no longer occurs in ``literals`` (the binding was
+  substituted everywhere when it was made, paper III.A).
+"""
+
+from __future__ import annotations
+
+from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.logic.terms import Param, Term
+from strips_framework.logic.unify import substitute
+
+Bindings = tuple[tuple[Param, Term], ...]
+
+
+def binding_key(pair: tuple[Param, Term]) -> tuple[str, int]:
+    """The order of ``Clause.bindings``; answers are compared and reported in this order."""
+    return pair[0].name, pair[0].tag
+
+
+class PClause:
+    """A clause in the prover, with the bookkeeping the given-clause loop needs.
+
+    ``sos`` marks set-of-support clauses (the negated goal and everything derived from it);
+    ``parents`` are the ids of the premises, for proof extraction; ``dead`` is set when the
+    clause is deleted (subsumed), so indexes and queues can drop it lazily.
+    """
+
+    __slots__ = (
+        "id",
+        "literals",
+        "nvars",
+        "bindings",
+        "weight",
+        "keyset",
+        "sos",
+        "parents",
+        "label",
+        "dead",
+        "processed",
+    )
+
+    def __init__(
+        self,
+        literals: tuple[Literal, ...],
+        nvars: int,
+        bindings: Bindings,
+        *,
+        sos: bool,
+        parents: tuple[int, ...] = (),
+        label: str = "",
+    ) -> None:
+        self.id = -1
+        self.literals = literals
+        self.nvars = nvars
+        self.bindings = bindings
+        self.weight = sum(term_weight(atom) for _, atom in literals)
+        self.keyset = frozenset((pos, atom[0], len(atom)) for pos, atom in literals)
+        self.sos = sos
+        self.parents = parents
+        self.label = label
+        self.dead = False
+        self.processed = False
+
+    def to_clause(self) -> Clause:
+        return Clause(self.literals, self.bindings, label=self.label)
+
+    def __repr__(self) -> str:
+        return f"PClause#{self.id}({self.to_clause()})"
+
+
+def term_weight(term: Term) -> int:
+    """Symbol count with variables weighing 1 and every other symbol 2 (E's default)."""
+    kind = type(term)
+    if kind is int:
+        return 1
+    if kind is tuple:
+        return 2 + sum(term_weight(arg) for arg in term[1:])
+    return 2
+
+
+def term_depth(term: Term) -> int:
+    if type(term) is tuple and len(term) > 1:
+        return 1 + max(term_depth(arg) for arg in term[1:])
+    return 0
+
+
+def renumber(term: Term, numbering: dict[int, int]) -> Term:
+    """Rename variables to ``0, 1, ...`` in order of first occurrence, sharing ``numbering``."""
+    kind = type(term)
+    if kind is int:
+        number = numbering.get(term)
+        if number is None:
+            number = numbering[term] = len(numbering)
+        return number
+    if kind is tuple:
+        return (term[0], *[renumber(arg, numbering) for arg in term[1:]])
+    return term
+
+
+def offset(term: Term, by: int) -> Term:
+    """Rename apart: add ``by`` to every variable."""
+    kind = type(term)
+    if kind is int:
+        return term + by
+    if kind is tuple:
+        return (term[0], *[offset(arg, by) for arg in term[1:]])
+    return term
+
+
+def from_clause(clause: Clause, *, sos: bool) -> PClause:
+    """Import a public clause: substitute its bindings, number its variables, drop repeats."""
+    bound = dict(clause.bindings)
+    numbering: dict[int, int] = {}
+    literals: list[Literal] = []
+    for positive, atom in clause.literals:
+        if bound:
+            atom = substitute(atom, bound)
+        literal = (positive, renumber(atom, numbering))
+        if literal not in literals:
+            literals.append(literal)
+    return PClause(
+        tuple(literals), len(numbering), clause.bindings, sos=sos, label=clause.label
+    )

@@ -1,0 +1,226 @@
+"""The resolution prover: a DISCOUNT-style given-clause loop with a set of support.
+
+The axioms (world model) are *usable*: indexed from the start and never resolved with each
+other. The negated goal is the set of support and waits in the :class:`ClauseQueue`. Each
+round picks a given clause, drops it if a retained clause subsumes it, deletes the retained
+set-of-support clauses it subsumes, indexes it, and adds its resolvents with the retained
+clauses, its factors and (with equality) its paramodulants to the queue. Only processed
+clauses are partners, so every inference has a set-of-support premise.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from attrs import define, field
+from attrs.validators import ge, instance_of, optional
+
+from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
+
+from strips_resolution_prover.equality import (
+    equality_resolvents,
+    evaluate,
+    is_equality,
+    paramodulants,
+)
+from strips_resolution_prover.inference import RENAME_OFFSET, factors, resolvents
+from strips_resolution_prover.pclause import PClause, from_clause, offset, renumber, term_depth
+from strips_resolution_prover.selection import ClauseQueue
+from strips_resolution_prover.subsumption import SubsumptionIndex
+
+IndexKey = tuple[bool, str, int]
+
+
+@define(frozen=True)
+class ResolutionProver:
+    """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
+
+    Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
+    serves unit clauses first; ``max_clause_literals`` and ``max_term_depth`` discard
+    larger conclusions (``None``: no limit; a limit makes the search incomplete, which is
+    fine for world models with finite depth and rarely fine for TPTP).
+    """
+
+    name: ClassVar[str] = "resolution"
+
+    pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
+    unit_preference: bool = field(default=True, validator=instance_of(bool))
+    max_clause_literals: int | None = field(
+        default=None, validator=optional([instance_of(int), ge(1)])
+    )
+    max_term_depth: int | None = field(
+        default=None, validator=optional([instance_of(int), ge(0)])
+    )
+
+    def prove(self, task: ProofTask) -> ProofResult:
+        """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
+        return _Saturation(self, task).run()
+
+
+class _Saturation:
+    """The state of one proof attempt."""
+
+    def __init__(self, options: ResolutionProver, task: ProofTask) -> None:
+        self.options = options
+        self.task = task
+        self.clauses: list[PClause] = []
+        self.queue = ClauseQueue(options.pick_given_ratio, options.unit_preference)
+        self.index: dict[IndexKey, list[tuple[PClause, int]]] = {}
+        self.subsumption = SubsumptionIndex()
+        self.processed: list[PClause] = []
+        self.equational: list[PClause] = []
+        self.answers: list[Answer] = []
+        self.refutation: PClause | None = None
+        self.uses_equality = any(
+            is_equality(atom)
+            for clause in (*task.axioms, *task.negated_goal)
+            for _, atom in clause.literals
+        )
+
+    # -- the loop -----------------------------------------------------------------------
+
+    def run(self) -> ProofResult:
+        for clause in self.task.axioms:
+            self._add_axiom(from_clause(clause, sos=False))
+        for clause in self.task.negated_goal:
+            self._add_new(from_clause(clause, sos=True))
+        effort = 0
+        while not self._done() and effort < self.task.effort:
+            given = self.queue.pop()
+            if given is None:
+                break
+            if self._answered(given) or self.subsumption.is_subsumed(given):
+                given.dead = True
+                continue
+            effort += 1
+            self._process(given)
+        return self._result(effort)
+
+    def _done(self) -> bool:
+        return len(self.answers) >= self.task.max_answers
+
+    def _process(self, given: PClause) -> None:
+        for victim in self.subsumption.subsumed_by(given):
+            if victim.sos:
+                victim.dead = True
+                self.subsumption.note_deleted()
+        self._retain(given)
+        renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
+        for clause in resolvents(given, renamed, self.index):
+            self._add_new(clause)
+            if self._done():
+                return
+        for clause in factors(given):
+            self._add_new(clause)
+        if self.uses_equality:
+            self._equality_inferences(given, renamed)
+
+    def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
+        for clause in equality_resolvents(given):
+            self._add_new(clause)
+        has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
+        partners = self.processed if has_equation else self.equational
+        for clause in paramodulants(given, renamed, list(partners)):
+            self._add_new(clause)
+            if self._done():
+                return
+
+    # -- clause bookkeeping ---------------------------------------------------------------
+
+    def _register(self, clause: PClause) -> None:
+        clause.id = len(self.clauses)
+        self.clauses.append(clause)
+
+    def _retain(self, clause: PClause) -> None:
+        """Make ``clause`` a partner for later given clauses."""
+        self.processed.append(clause)
+        if any(pos and is_equality(atom) for pos, atom in clause.literals):
+            self.equational.append(clause)
+        self.subsumption.add(clause)
+        for i, (positive, atom) in enumerate(clause.literals):
+            self.index.setdefault((positive, atom[0], len(atom)), []).append((clause, i))
+
+    def _add_axiom(self, clause: PClause) -> None:
+        simplified = self._simplify(clause)
+        if simplified is None:
+            return
+        self._register(simplified)
+        simplified.processed = True
+        if not simplified.literals:
+            self._record_refutation(simplified)
+            return
+        self._retain(simplified)
+        # Factors of usable clauses are usable too: resolution is between factors.
+        for factor in factors(simplified):
+            self._add_axiom(PClause(factor.literals, factor.nvars, factor.bindings,
+                                    sos=False, parents=factor.parents))
+
+    def _add_new(self, clause: PClause) -> None:
+        """Simplify a new set-of-support clause and queue it, or record a refutation."""
+        simplified = self._simplify(clause)
+        if simplified is None:
+            return
+        if not simplified.literals:
+            if simplified.bindings not in self.answers:
+                self._register(simplified)
+                self._record_refutation(simplified)
+            return
+        if self.subsumption.is_subsumed(simplified):
+            return
+        self._register(simplified)
+        self.queue.push(simplified)
+
+    def _simplify(self, clause: PClause) -> PClause | None:
+        """Evaluate equalities and apply the size limits; ``None`` deletes the clause."""
+        literals = clause.literals
+        if self.uses_equality:
+            evaluated = evaluate(literals, self.task.unique_names)
+            if evaluated is None:
+                return None
+            if evaluated is not literals:
+                numbering: dict[int, int] = {}
+                literals = tuple((pos, renumber(atom, numbering)) for pos, atom in evaluated)
+                clause = PClause(literals, len(numbering), clause.bindings, sos=clause.sos,
+                                 parents=clause.parents, label=clause.label)
+        limit = self.options.max_clause_literals
+        if limit is not None and len(literals) > limit:
+            return None
+        depth = self.options.max_term_depth
+        if depth is not None and any(term_depth(atom) - 1 > depth for _, atom in literals):
+            return None
+        return clause
+
+    def _record_refutation(self, clause: PClause) -> None:
+        self.answers.append(clause.bindings)
+        if self.refutation is None:
+            self.refutation = clause
+
+    def _answered(self, clause: PClause) -> bool:
+        """Whether every refutation through ``clause`` would repeat an answer found."""
+        if not self.answers:
+            return False
+        bindings = set(clause.bindings)
+        return any(set(answer) <= bindings for answer in self.answers)
+
+    # -- results ------------------------------------------------------------------------
+
+    def _result(self, effort: int) -> ProofResult:
+        if self.answers:
+            return ProofResult(PROVED, answers=tuple(self.answers), effort_used=effort,
+                               proof=self._proof())
+        status = SATURATED if not len(self.queue) else GAVE_UP
+        uncompleted = tuple(c.to_clause() for c in self.clauses if c.sos and not c.dead)
+        return ProofResult(status, uncompleted=uncompleted, effort_used=effort)
+
+    def _proof(self) -> tuple[Clause, ...]:
+        """The refutation's clauses, premises before conclusions (by derivation order)."""
+        assert self.refutation is not None
+        needed: set[int] = set()
+        stack = [self.refutation.id]
+        while stack:
+            cid = stack.pop()
+            if cid not in needed:
+                needed.add(cid)
+                stack.extend(self.clauses[cid].parents)
+        return tuple(self.clauses[cid].to_clause() for cid in sorted(needed))

@@ -1,0 +1,55 @@
+"""Given-clause selection: a weight queue and an age queue picked in a fixed ratio.
+
+The weight queue finds short proofs fast; the age queue makes the search fair (every clause
+is eventually picked, so saturation means what it says). With unit preference the weight
+queue serves unit clauses before longer ones, which on Horn world models makes the search
+behave like backward chaining. Ties break on clause id, i.e. derivation order, so the
+search never depends on hashing.
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections import deque
+
+from strips_resolution_prover.pclause import PClause
+
+
+class ClauseQueue:
+    """Unprocessed clauses; a clause leaves both queues when it is picked from one."""
+
+    def __init__(self, pick_given_ratio: int, unit_preference: bool) -> None:
+        self._ratio = pick_given_ratio
+        self._unit_preference = unit_preference
+        self._by_weight: list[tuple[int, int, int, PClause]] = []
+        self._by_age: deque[PClause] = deque()
+        self._picks = 0
+        self._size = 0
+
+    def __len__(self) -> int:
+        return self._size
+
+    def push(self, clause: PClause) -> None:
+        longer = int(self._unit_preference and len(clause.literals) > 1)
+        heapq.heappush(self._by_weight, (longer, clause.weight, clause.id, clause))
+        self._by_age.append(clause)
+        self._size += 1
+
+    def pop(self) -> PClause | None:
+        """The next given clause, or ``None`` when no clause is waiting."""
+        while self._size:
+            self._picks += 1
+            if self._picks % (self._ratio + 1) == 0:
+                clause = self._by_age.popleft()
+            else:
+                clause = heapq.heappop(self._by_weight)[3]
+            if clause.processed:
+                continue
+            clause.processed = True
+            self._size -= 1
+            return clause
+        return None
+
+    def waiting(self) -> list[PClause]:
+        """The clauses not yet picked, in derivation order."""
+        return [c for c in self._by_age if not c.processed]
