@@ -1,0 +1,36 @@
+"""Greedy-leaning best-first: goals left plus unproved literals, plus a share of the cost."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from attrs import frozen
+
+from strips_framework.search.node import Node
+from strips_evaluators.features import subgoals, unproved_literals
+from strips_evaluators.options import weight
+
+
+@frozen
+class GoalCount:
+    """Score = h + ``cost_weight`` * operators applied so far, where
+    h = (goals on the goal list - 1) + literals in the smallest difference clause.
+
+    h counts the subgoals still to be achieved and the unproved literals of the best
+    partial proof of the first goal: each usually needs at least one operator. It is not
+    admissible, since one operator's add list can resolve away several literals (or a later
+    model can hold them). ``cost_weight`` = 1 gives weighted-A*-like behaviour; 0 gives
+    greedy best-first, fast but with longer plans.
+
+    The score ignores how many successors a node has made, so under the means-ends
+    strategy a node keeps winning until its relevant instances are used up: every
+    alternative at a choice point is opened before the search goes deeper.
+    """
+
+    name: ClassVar[str] = "goal-count"
+    admissible: ClassVar[bool] = False
+
+    cost_weight: float = weight(1.0)
+
+    def evaluate(self, node: Node) -> float:
+        return subgoals(node) + unproved_literals(node) + self.cost_weight * node.cost

@@ -1,0 +1,87 @@
+"""The evaluation function of the paper (II.B and V), as a weighted sum of its factors."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import ClassVar
+
+from attrs import frozen
+
+from strips_framework.logic.formulas import atoms_of
+from strips_framework.logic.terms import EQUALITY
+from strips_framework.search.node import Node
+from strips_evaluators.features import subgoals, unproved_literals
+from strips_evaluators.options import weight, weight_table
+
+
+@frozen
+class PaperEvaluator:
+    """STRIPS's own node ordering: a weighted sum of the factors the paper names.
+
+    The paper lists the factors but publishes no weights. The score of a node is::
+
+        goal_weight       * goals on the list besides G0                    (II.B)
+      + sum of the predicate weights of the atoms in those goals          (II.B)
+      + difference_weight * literals in the smallest difference clause    (II.B, V)
+      + cost_weight       * operators applied so far                      (V)
+      + successor_weight  * successors the node has already generated
+      + pending_weight    * literals left by the next relevant instance    (V)
+
+    *Predicates.* Each atom of a subgoal counts ``predicate_weights[name]``, or
+    ``predicate_weight`` for a predicate the table does not name, so that hard predicates
+    (say ``INROOM``, which needs a door) can weigh more than easy ones (``NEXTTO``).
+    Equality is not counted: with unique names it is decided by evaluation, never by an
+    operator. G0 is left out of both goal terms because every node carries it.
+
+    *Difference.* Only the smallest clause counts. It is the partial proof nearest to
+    completion, and each of its literals needs an operator or a fact of a later model. The
+    number of clauses is not used: it grows with the prover's effort and with the number of
+    alternative partial proofs kept, which says nothing about how far the node is from a
+    proof (more alternatives would even be good news). A proved first goal counts 0.
+
+    *Successors.* The means-ends strategy makes one successor per expansion and re-queues
+    the node; this term makes a node that already has children give way to them, which is
+    where the paper's strongly depth-first search comes from. It must outweigh what a new
+    subgoal adds (one goal and its predicates), or the search turns breadth-first.
+
+    *Pending.* The estimated difficulty of the subgoal the next expansion would make: the
+    size of the resolvent its relevant instance left (the strategy takes instances in
+    order, so this is the first pending one). 0 when nothing is pending.
+
+    Defaults give the depth-leaning search of the paper: applying an operator pops a goal
+    and so lowers the score, a fresh subgoal (about 1 + 0.5 per predicate, 3 for a typical
+    precondition) scores below its parent once the parent has paid 5 for its first child,
+    and cost only breaks near-ties. Not admissible: the weights are not in units of
+    operators.
+    """
+
+    name: ClassVar[str] = "paper"
+    admissible: ClassVar[bool] = False
+
+    goal_weight: float = weight(1.0)
+    predicate_weight: float = weight(0.5)
+    predicate_weights: Mapping[str, float] = weight_table()
+    difference_weight: float = weight(2.0)
+    cost_weight: float = weight(0.5)
+    successor_weight: float = weight(5.0)
+    pending_weight: float = weight(1.0)
+
+    def evaluate(self, node: Node) -> float:
+        pending = len(node.pending[0].resolvent.literals) if node.pending else 0
+        return (
+            self.goal_weight * subgoals(node)
+            + self._predicate_score(node)
+            + self.difference_weight * unproved_literals(node)
+            + self.cost_weight * node.cost
+            + self.successor_weight * node.successors_generated
+            + self.pending_weight * pending
+        )
+
+    def _predicate_score(self, node: Node) -> float:
+        table, default = self.predicate_weights, self.predicate_weight
+        return sum(
+            table.get(atom[0], default)
+            for goal in node.goals[:-1]
+            for atom in atoms_of(goal.formula)
+            if atom[0] != EQUALITY
+        )

@@ -1,0 +1,20 @@
+"""Registers this distribution's evaluators (entry point ``evaluators`` in group
+``strips_framework``)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from strips_framework.hookspecs import hookimpl
+from strips_evaluators.breadth_first import BreadthFirst
+from strips_evaluators.goal_count import GoalCount
+from strips_evaluators.goal_list_bound import GoalListBound
+from strips_evaluators.paper import PaperEvaluator
+
+if TYPE_CHECKING:
+    from strips_framework.search.components import NodeEvaluator
+
+
+@hookimpl
+def strips_register_evaluators() -> list[type[NodeEvaluator]]:
+    return [PaperEvaluator, BreadthFirst, GoalCount, GoalListBound]

@@ -1,0 +1,96 @@
+from __future__ import annotations
+
+import pytest
+
+from strips_framework.logic.formulas import And, Atomic, Not
+from strips_evaluators.paper import PaperEvaluator
+
+
+def test_each_factor_counts_with_its_weight(make_node) -> None:
+    evaluator = PaperEvaluator(
+        goal_weight=1,
+        predicate_weight=10,
+        difference_weight=100,
+        cost_weight=1000,
+        successor_weight=10_000,
+        pending_weight=100_000,
+    )
+    node = make_node(
+        subgoals=["A B", "C"],
+        difference=[3, 2, 4],
+        cost=1,
+        successors=2,
+        pending=[1, 0],
+    )
+    assert evaluator.evaluate(node) == 2 + 3 * 10 + 2 * 100 + 1000 + 2 * 10_000 + 100_000
+
+
+def test_predicate_table_overrides_the_default_and_equality_is_free(make_node) -> None:
+    evaluator = PaperEvaluator(
+        goal_weight=0, difference_weight=0, predicate_weight=1, predicate_weights={"INROOM": 5}
+    )
+    goal = And([Atomic(("INROOM", "ROBOT", "ROOM1")), Atomic(("NEXTTO", "ROBOT", "BOX1")),
+                Not(Atomic(("=", "ROOM1", "ROOM2")))])
+    assert evaluator.evaluate(make_node(subgoals=[goal])) == 5 + 1
+
+
+def test_top_goal_is_not_counted(make_node) -> None:
+    assert PaperEvaluator().evaluate(make_node(difference=None)) == 0
+
+
+def test_fewer_goals_and_smaller_differences_win(make_node) -> None:
+    evaluator = PaperEvaluator()
+    shallow = make_node(subgoals=["A"])
+    deep = make_node(subgoals=["A", "B"])
+    assert evaluator.evaluate(shallow) < evaluator.evaluate(deep)
+    assert evaluator.evaluate(make_node(difference=[1, 5])) < evaluator.evaluate(
+        make_node(difference=[2])
+    )
+
+
+def test_defaults_lean_depth_first(make_node) -> None:
+    """A fresh subgoal beats its parent once the parent has made it, and applying the
+    subgoal's operator (which pops it) beats the subgoal node."""
+    evaluator = PaperEvaluator()
+    parent = make_node(subgoals=["A B"], successors=1, pending=[0])
+    child = make_node(subgoals=["C D E", "A B"], pending=[0])
+    applied = make_node(subgoals=["A B"], cost=1, pending=[0])
+    assert evaluator.evaluate(child) < evaluator.evaluate(parent)
+    assert evaluator.evaluate(applied) < evaluator.evaluate(child)
+
+
+def test_next_pending_instance_is_the_one_measured(make_node) -> None:
+    evaluator = PaperEvaluator(difference_weight=0, pending_weight=1)
+    assert evaluator.evaluate(make_node(pending=[2, 0])) == 2
+    assert evaluator.evaluate(make_node(pending=[])) == 0
+
+
+@pytest.mark.parametrize(
+    ("options", "error"),
+    [
+        ({"goal_weight": -1.0}, ValueError),
+        ({"successor_weight": float("nan")}, ValueError),
+        ({"cost_weight": "1"}, TypeError),
+        ({"pending_weight": True}, TypeError),
+        ({"predicate_weights": {"AT": -2}}, ValueError),
+        ({"predicate_weights": {"AT": "heavy"}}, TypeError),
+        ({"predicate_weights": [("AT", 1.0)]}, TypeError),
+        ({"predicate_weights": {"": 1.0}}, TypeError),
+    ],
+)
+def test_bad_options_are_rejected_naming_the_option(options, error) -> None:
+    with pytest.raises(error) as raised:
+        PaperEvaluator(**options)
+    assert f"'{next(iter(options))}" in str(raised.value.args[0])
+
+
+def test_weight_table_is_read_only_and_compared() -> None:
+    table = {"AT": 2.0}
+    evaluator = PaperEvaluator(predicate_weights=table)
+    table["AT"] = 9.0
+    assert evaluator.predicate_weights["AT"] == 2.0
+    with pytest.raises(TypeError):
+        evaluator.predicate_weights["AT"] = 3.0  # type: ignore[index]
+    assert evaluator == PaperEvaluator(predicate_weights={"AT": 2.0})
+    assert evaluator != PaperEvaluator()
+    hash(evaluator)

@@ -1,0 +1,42 @@
+from __future__ import annotations
+
+import inspect
+
+import attrs
+import pluggy
+
+from strips_framework import hookspecs
+from strips_evaluators import plugin
+
+
+def test_hook_returns_every_evaluator_with_a_unique_name_and_docs() -> None:
+    classes = plugin.strips_register_evaluators()
+    names = [cls.name for cls in classes]
+    assert sorted(names) == ["astar-goals", "breadth-first", "goal-count", "paper"]
+    for cls in classes:
+        assert attrs.has(cls)
+        assert isinstance(cls.admissible, bool)
+        assert inspect.getdoc(cls) and len(inspect.getdoc(cls)) > 80
+        for field in attrs.fields(cls):
+            assert field.default is not attrs.NOTHING, f"{cls.name}.{field.name} needs a default"
+        cls()  # every option has a valid default
+
+
+def test_hook_implements_the_core_spec() -> None:
+    manager = pluggy.PluginManager(hookspecs.PROJECT)
+    manager.add_hookspecs(hookspecs)
+    manager.register(plugin)
+    manager.check_pending()
+    assert manager.hook.strips_register_evaluators() == [plugin.strips_register_evaluators()]
+
+
+def test_evaluators_are_frozen(make_node) -> None:
+    for cls in plugin.strips_register_evaluators():
+        evaluator = cls()
+        evaluator.evaluate(make_node())
+        for field in attrs.fields(cls):
+            try:
+                setattr(evaluator, field.name, 1.0)
+            except attrs.exceptions.FrozenInstanceError:
+                continue
+            raise AssertionError(f"{cls.name}.{field.name} is mutable")
