@@ -1,0 +1,64 @@
+"""The TOML config: defaults, choices, options and errors with key paths."""
+
+from pathlib import Path
+
+import pytest
+
+from strips_framework.config import Config
+from strips_framework.errors import ConfigError
+from strips_framework.plugins import Registry, get_plugin_manager
+from strips_framework.search.means_ends import MeansEndsSearch
+
+
+@pytest.fixture(scope="module")
+def registry():
+    return Registry(get_plugin_manager(load_entrypoints=False))
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "strips.toml"
+    path.write_text(text)
+    return path
+
+
+def test_defaults():
+    config = Config.default()
+    assert config.choices["strategy"].name == "means-ends"
+    assert config.choices["prover"].name == "resolution"
+    assert config.limits.effort > 0
+
+
+def test_choice_with_options_and_limits(tmp_path, registry):
+    config = Config.from_file(write(tmp_path, """
+[strategy]
+name = "means-ends"
+max_goals = 5
+[limits]
+time = 10
+nodes = 50
+"""))
+    assert config.build(registry, "strategy") == MeansEndsSearch(max_goals=5)
+    assert config.limits.time == 10.0 and config.limits.nodes == 50
+
+
+def test_string_shorthand(tmp_path):
+    config = Config.from_file(write(tmp_path, 'evaluator = "breadth-first"\n'))
+    assert config.choices["evaluator"].name == "breadth-first"
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("[provr]\nname = 'x'\n", r"unknown key 'provr' \(expected one of: strategy, prover"),
+    ("[strategy]\nmax_goal = 3\n",
+     r"unknown key 'strategy.max_goal': search strategy 'means-ends' has no option 'max_goal' \(options: max_goals\)"),
+    ("[strategy]\nmax_goals = 0\n", r"bad value for 'strategy.max_goals': .*> 0.* \(got 0\)"),
+    ("[strategy]\nmax_goals = 'many'\n", r"bad value for 'strategy.max_goals'.*\(got 'many'\)"),
+    ("[limits]\nnodes = -1\n", r"bad value for 'limits.nodes'"),
+    ("[limits]\nspeed = 1\n", r"unknown key 'limits.speed'"),
+    ("limits = 3\n", r"'limits' must be a table, got an integer"),
+    ("[strategy\n", r"not valid TOML"),
+])
+def test_errors_name_the_file_and_key_path(tmp_path, registry, text, message):
+    path = write(tmp_path, text)
+    with pytest.raises(ConfigError, match=message) as error:
+        Config.from_file(path).build(registry, "strategy")
+    assert str(error.value).startswith(str(path))

@@ -1,0 +1,90 @@
+"""The plugin manager, the registry and the hook documentation."""
+
+import inspect
+from pathlib import Path
+from typing import ClassVar
+
+import pytest
+from attrs import frozen
+
+from strips_framework import hookspecs
+from strips_framework.errors import PluginError
+from strips_framework.hookspecs import hookimpl
+from strips_framework.plugins import KINDS, Registry, get_plugin_manager
+
+DOCS = Path(__file__).resolve().parents[1] / "docs" / "hooks.md"
+HOOKS = [
+    (name, fn) for name, fn in inspect.getmembers(hookspecs, inspect.isfunction)
+    if name.startswith("strips_")
+]
+
+
+def test_there_are_hooks_for_every_kind():
+    assert {hook for hook, _ in KINDS.values()} == {name for name, _ in HOOKS}
+
+
+@pytest.mark.parametrize(("name", "spec"), HOOKS, ids=[name for name, _ in HOOKS])
+def test_every_hook_has_a_docstring_and_is_documented(name, spec):
+    assert (spec.__doc__ or "").strip(), f"hook {name} has no docstring"
+    signature = f"{name}() -> {inspect.signature(spec).return_annotation}"
+    assert f"### `{signature}`" in DOCS.read_text(), f"{signature} is not in docs/hooks.md"
+
+
+def test_builtins_register_through_the_hooks():
+    registry = Registry(get_plugin_manager(load_entrypoints=False))
+    assert registry.names("strategy") == ["astar", "means-ends"]
+    assert registry.names("difference") == ["uncompleted-proof"]
+    assert registry.names("relevance") == ["add-list"]
+    assert "native" in registry.names("loader")
+    assert registry.get("strategy", "means-ends").distribution is None
+
+
+def test_installed_plugins_come_from_their_distributions():
+    registry = Registry(get_plugin_manager(load_entrypoints=True))
+    assert registry.get("prover", "resolution").distribution == "strips-resolution-prover"
+    assert registry.get("evaluator", "paper").distribution == "strips-evaluators"
+
+
+def test_unknown_name_lists_the_available_ones_and_the_distribution():
+    registry = Registry(get_plugin_manager(load_entrypoints=False))
+    with pytest.raises(PluginError) as error:
+        registry.get("prover", "z3")
+    assert str(error.value) == (
+        "prover 'z3' is not registered (available: none); is strips-z3-prover installed?"
+    )
+    with pytest.raises(PluginError, match=r"strategy 'dfs' is not registered \(available: astar, means-ends\)"):
+        registry.get("strategy", "dfs")
+
+
+@frozen
+class _Clash:
+    """A second 'means-ends'."""
+
+    name: ClassVar[str] = "means-ends"
+
+
+class _ClashPlugin:
+    @hookimpl
+    def strips_register_strategies(self):
+        return [_Clash]
+
+
+def test_duplicate_names_are_errors():
+    with pytest.raises(PluginError, match="'means-ends' is registered twice"):
+        Registry(get_plugin_manager([_ClashPlugin()], load_entrypoints=False))
+
+
+class _Misspelled:
+    @hookimpl
+    def strips_register_provrs(self):
+        return []
+
+
+def test_misspelled_hook_implementation_is_an_error():
+    with pytest.raises(Exception, match="strips_register_provrs"):
+        get_plugin_manager([_Misspelled()], load_entrypoints=False)
+
+
+def test_autoload_switch(monkeypatch):
+    monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
+    assert Registry(get_plugin_manager()).names("prover") == []
