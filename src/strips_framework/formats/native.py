@@ -20,7 +20,7 @@ error is an :class:`~strips_framework.errors.InputError` naming ``file:line:colu
 
 from __future__ import annotations
 
-import re
+from collections.abc import Iterable
 from pathlib import Path
 from typing import ClassVar
 
@@ -30,7 +30,7 @@ from strips_framework.errors import InputError
 from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
-from strips_framework.logic.terms import Atom, Param, atom_to_str
+from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of
 from strips_framework.problem import DerivedFact, OperatorSchema, Problem, SourceSpan
 
 #: Blocks whose indented lines are separate entries; the others continue their first line.
@@ -38,7 +38,6 @@ SECTIONS = ("facts", "axioms", "derived", "operator")
 KEYWORDS = ("problem", "constants", "primitive", "unique-names", "include", *SECTIONS, "goal")
 OPERATOR_PARTS = ("pre", "delete", "add")
 
-_FIRST_WORD = re.compile(r"[A-Za-z0-9_]+(?:-[A-Za-z0-9_]+)*")
 _GROUND_HINT = "facts must be ground; write quantified statements under 'axioms'"
 _CLOSED_HINT = "a variable must be bound by 'forall' or 'exists'"
 
@@ -52,12 +51,17 @@ class Entry:
     column: int
     text: str
 
-    def parser(self, **scope: object) -> WffParser:
+    def parser(
+        self,
+        params: tuple[str, ...] = (),
+        constants: Iterable[str] | None = None,
+        arities: Arities | None = None,
+        hint: str = "",
+    ) -> WffParser:
         tokens = tokenize(self.text, self.path, self.line, self.column, "end of line")
-        return WffParser(tokens, self.path, **scope)  # type: ignore[arg-type]
-
-    def where(self) -> str:
-        return f"{self.path}:{self.line}"
+        return WffParser(
+            tokens, self.path, params=params, constants=constants, arities=arities, hint=hint
+        )
 
 
 @frozen
@@ -83,7 +87,7 @@ def read_blocks(path: Path, shown: str, including: tuple[Path, ...] = ()) -> lis
         parser.end()
         target = path.parent / name.text[1:-1]
         if target.resolve() in {p.resolve() for p in (*including, path)}:
-            raise parser.fail(name, f"'{name.text[1:-1]}' includes itself")
+            raise parser.fail(name, f"including '{name.text[1:-1]}' here would make a cycle")
         try:
             shown_target = str(Path(shown).parent / name.text[1:-1])
             blocks += read_blocks(target, shown_target, (*including, path))
@@ -98,7 +102,7 @@ def _split(text: str, path: str) -> list[Block]:
     groups: list[list[tuple[int, int]]] = []  # per block: (line index, indentation)
     for index, raw in enumerate(lines):
         content = raw.lstrip(" \t")
-        if not content or content.startswith("#"):
+        if not content.strip() or content.startswith("#"):
             continue
         indent = len(raw) - len(content)
         if indent == 0:
@@ -116,12 +120,11 @@ def _split(text: str, path: str) -> list[Block]:
 
     blocks = []
     for group in groups:
-        word = _FIRST_WORD.match(lines[group[0][0]])
-        keyword = word.group() if word else ""
-        if keyword not in KEYWORDS:
-            found = repr(keyword) if keyword else f"'{lines[group[0][0]].split()[0]}'"
-            message = f"expected a keyword ({', '.join(KEYWORDS)}) but found {found}"
-            raise InputError(path, group[0][0] + 1, 1, message)
+        first = tokenize(lines[group[0][0]], path, group[0][0] + 1)[0]
+        keyword = first.text
+        if first.kind != "NAME" or keyword not in KEYWORDS:
+            message = f"expected a keyword ({', '.join(KEYWORDS)}) but found '{keyword}'"
+            raise InputError(path, first.line, first.column, message)
         if keyword not in SECTIONS:
             blocks.append(Block(keyword, entry(group), ()))
             continue
@@ -205,8 +208,9 @@ class _Reader:
             raise parser.fail(keyword, f"'{keyword.text}' is given twice (first at {first})")
         self.once[keyword.text] = f"{parser.path}:{keyword.line}"
 
-    def _scope(self, params: tuple[str, ...] = (), hint: str = "") -> dict[str, object]:
-        return dict(params=params, constants=self.constants, arities=self.arities, hint=hint)
+    def _parser(self, entry: Entry, params: tuple[str, ...] = (), hint: str = "") -> WffParser:
+        """A parser for ``entry`` that knows the declared constants and the arities."""
+        return entry.parser(params, self.constants, self.arities, hint)
 
     def _missing(self, line: str) -> InputError:
         return InputError(self.source, 1, None, f"expected a '{line}' line but found none")
@@ -256,18 +260,18 @@ class _Reader:
     # --- facts, axioms, derived facts, goal -----------------------------------------
 
     def _fact(self, entry: Entry) -> None:
-        parser = entry.parser(**self._scope(hint=_GROUND_HINT))
+        parser = self._parser(entry, hint=_GROUND_HINT)
         for atom, _ in parser.atom_list():
             self.facts[atom] = None
         parser.end()
 
     def _axiom(self, entry: Entry) -> None:
-        parser = entry.parser(**self._scope(hint=_CLOSED_HINT))
+        parser = self._parser(entry, hint=_CLOSED_HINT)
         self.axioms.append(parser.formula())
         parser.end()
 
     def _derived(self, entry: Entry) -> None:
-        parser = entry.parser(**self._scope(hint="derived facts are ground"))
+        parser = self._parser(entry, hint="derived facts are ground")
         head = parser.peek
         atom = parser.atom()
         if self._is_primitive(atom):
@@ -280,7 +284,7 @@ class _Reader:
         self.derived.append((fact, supports))
 
     def _goal(self, entry: Entry) -> None:
-        parser = entry.parser(**self._scope(hint=_CLOSED_HINT))
+        parser = self._parser(entry, hint=_CLOSED_HINT)
         self._once(parser)
         self.goal = parser.formula()
         parser.end()
@@ -330,30 +334,45 @@ class _Reader:
                 raise parser.fail(param, f"parameter '{param.text}' is also a declared constant")
         names = tuple(p.text for p in params)
         pre, lists = self._operator_parts(block, name.text, names)
+        path = block.header.path
+        self._check_effects(path, name.text, params, pre, lists)
+        self.additions += [(a, t, path, name.text) for a, t in lists["add"]]
+        adds = [a for a, _ in lists["add"]]
+        deletes = [a for a, _ in lists["delete"]]
+        source = SourceSpan(path, block.header.line)
+        schema = OperatorSchema(name.text, map(Param, names), pre, adds, deletes, source)
+        self.operators[name.text] = schema
+
+    def _check_effects(
+        self,
+        path: str,
+        operator: str,
+        params: list[Token],
+        pre: Formula,
+        lists: dict[str, list[tuple[Atom, Token]]],
+    ) -> None:
+        """Delete lists name primitive predicates only; every parameter can be bound."""
         for atom, token in lists["delete"]:
             if not self._is_primitive(atom):
                 message = (
                     f"expected only primitive predicates on a delete list (paper III.B) "
                     f"but {atom[0]}/{len(atom) - 1} is not declared primitive"
                 )
-                raise InputError(block.header.path, token.line, token.column, message)
-        path = block.header.path
-        self.additions += [(a, t, path, name.text) for a, t in lists["add"]]
-        adds = [a for a, _ in lists["add"]]
-        deletes = [a for a, _ in lists["delete"]]
-        bindable = params_in(pre) | {t for a in adds for t in a[1:] if isinstance(t, Param)}
-        in_delete = {t for a in deletes for t in a[1:] if isinstance(t, Param)}
+                raise InputError(path, token.line, token.column, message)
+
+        def params_of_list(part: str) -> set[Param]:
+            return {p for atom, _ in lists[part] for arg in atom[1:] for p in params_of(arg)}
+
+        bindable = params_in(pre) | params_of_list("add")
         for param in params:
             if Param(param.text) not in bindable:
-                where = "only in the delete list" if Param(param.text) in in_delete else "nowhere"
+                deleted = Param(param.text) in params_of_list("delete")
                 message = (
-                    f"parameter '{param.text}' of {name.text} occurs {where}: neither the "
+                    f"parameter '{param.text}' of {operator} occurs "
+                    f"{'only in the delete list' if deleted else 'nowhere'}: neither the "
                     f"precondition nor the add list can bind it"
                 )
-                raise parser.fail(param, message)
-        source = SourceSpan(path, block.header.line)
-        schema = OperatorSchema(name.text, map(Param, names), pre, adds, deletes, source)
-        self.operators[name.text] = schema
+                raise InputError(path, param.line, param.column, message)
 
     def _operator_parts(
         self, block: Block, operator: str, params: tuple[str, ...]
@@ -363,7 +382,7 @@ class _Reader:
         lists: dict[str, list[tuple[Atom, Token]]] = {"delete": [], "add": []}
         seen: set[str] = set()
         for entry in block.entries:
-            parser = entry.parser(**self._scope(params))
+            parser = self._parser(entry, params)
             part = parser.peek
             if part.kind != "NAME" or part.text not in OPERATOR_PARTS:
                 raise parser.error("'pre', 'delete' or 'add'")
