@@ -6,6 +6,7 @@ from strips_framework.logic.terms import Param
 from strips_framework.problem import OperatorSchema
 from strips_framework.relevance import AddListRelevance
 from strips_framework.search.node import Difference
+from strips_framework.world import InitialModel, WorldModel
 
 k, m, n = Param("k"), Param("m"), Param("n")
 GOTO = OperatorSchema("goto", [m, n], Atomic(("ATR", m)), [("ATR", n)], [("ATR", m)])
@@ -13,11 +14,12 @@ PUSH = OperatorSchema(
     "push", [k, m, n], And([Atomic(("AT", k, m)), Atomic(("ATR", m))]),
     [("AT", k, n), ("ATR", n)], [("AT", k, m), ("ATR", m)],
 )
+EMPTY = WorldModel(InitialModel([]))
 
 
 def test_papers_example_two_instances_of_goto():
     difference = Difference([Clause([(False, ("ATR", "a")), (False, ("ATR", "b"))])])
-    found = AddListRelevance().relevant(difference, [GOTO, PUSH])
+    found = AddListRelevance().relevant(difference, [GOTO, PUSH], EMPTY)
     names = sorted(str(r.operator) for r in found)
     assert names == ["goto(m, a)", "goto(m, b)", "push(k, m, a)", "push(k, m, b)"]
     by_name = {str(r.operator): str(r.resolvent) for r in found}
@@ -29,7 +31,7 @@ def test_smaller_resolvents_rank_first_and_unbindable_instances_are_dropped():
         Clause([(False, ("AT", "BOX1", 0)), (False, ("AT", "BOX2", 0))]),
         Clause([(False, ("AT", "BOX2", "b"))]),
     ])
-    found = AddListRelevance().relevant(difference, [PUSH])
+    found = AddListRelevance().relevant(difference, [PUSH], EMPTY)
     # push(BOX1, m, x) would leave n unbound (it is not in the precondition): dropped.
     assert [str(r.operator) for r in found] == ["push(BOX2, m, b)"]
     assert found[0].resolvent.literals == ()
@@ -38,4 +40,18 @@ def test_smaller_resolvents_rank_first_and_unbindable_instances_are_dropped():
 def test_instance_bound_to_another_operators_parameter_is_dropped():
     goal_param = Param("m")
     difference = Difference([Clause([(False, ("ATR", goal_param))])])
-    assert AddListRelevance().relevant(difference, [GOTO]) == []
+    assert AddListRelevance().relevant(difference, [GOTO], EMPTY) == []
+
+
+def test_instances_that_would_undo_what_the_proof_rests_on_rank_last():
+    # Like the robot world's pushto: NEXTTO(BOX1, BOX2) already holds, NEXTTO(BOX2, BOX3)
+    # is wanted; pushto(BOX2, BOX3) would delete NEXTTO($, BOX2), pushto(BOX3, BOX2) not.
+    pushto = OperatorSchema(
+        "pushto", [m, n], Atomic(("NEXTTO", "ROBOT", m)), [("NEXTTO", m, n), ("NEXTTO", n, m)],
+        [("NEXTTO", m, "$"), ("NEXTTO", "$", m)],
+    )
+    goal = Clause([(False, ("NEXTTO", "BOX1", "BOX2")), (False, ("NEXTTO", "BOX2", "BOX3"))])
+    difference = Difference([Clause([(False, ("NEXTTO", "BOX2", "BOX3"))])], [goal])
+    model = WorldModel(InitialModel([Clause([(True, ("NEXTTO", "BOX1", "BOX2"))])]))
+    found = AddListRelevance().relevant(difference, [pushto], model)
+    assert [str(r.operator) for r in found] == ["pushto(BOX3, BOX2)", "pushto(BOX2, BOX3)"]

@@ -32,7 +32,7 @@ class UncompletedProofDifference:
         unique = list(dict.fromkeys(c for c in clauses if c.literals))
         # sorted() is stable: among clauses of one size, derivation order decides.
         unique.sort(key=lambda c: len(c.literals))
-        return Difference(unique[: self.max_clauses])
+        return Difference(unique[: self.max_clauses], negated_goal)
 
 
 @hookimpl

@@ -6,8 +6,12 @@ resolved against each such literal; every resolvent yields one relevant instance
 unifier applied to the schema's parameters. ``goto(m, n)`` against ``~ATR(a) | ~ATR(b)``
 gives ``goto(m, a)`` (resolvent ``~ATR(b)``) and ``goto(m, b)`` (resolvent ``~ATR(a)``).
 
-Instances are ranked by resolvent size: an instance that leaves less of the clause to
-prove continues the proof further.
+Instances are ranked by resolvent size, since an instance that leaves less of the clause
+to prove continues the proof further; among equals, instances that would delete fewer of
+the facts the proof already rests on come first. The paper leaves the order of candidates
+open; this one keeps STRIPS from undoing a goal it has just achieved (after
+``pushto(BOX1, BOX2)``, ``pushto(BOX3, BOX2)`` is preferred to ``pushto(BOX2, BOX3)``,
+which would delete ``NEXTTO(BOX1, BOX2)``).
 """
 
 from __future__ import annotations
@@ -24,8 +28,9 @@ from strips_framework.logic.formulas import params_in
 from strips_framework.logic.terms import Atom, Param, Term, params_of, variables_of
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.operators import OperatorInstance
-from strips_framework.problem import OperatorSchema
+from strips_framework.problem import WILDCARD, OperatorSchema
 from strips_framework.search.node import Difference, RelevantInstance
+from strips_framework.world import WorldModel
 
 #: Schema parameters are renamed to this tag while unifying, so they never meet the goal's
 #: own parameters (which carry tag 0: preconditions are built from the schemata).
@@ -44,10 +49,11 @@ class AddListRelevance:
     name: ClassVar[str] = "add-list"
 
     def relevant(
-        self, difference: Difference, operators: Sequence[OperatorSchema]
+        self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel
     ) -> list[RelevantInstance]:
         by_predicate = _add_atoms_by_predicate(operators)
-        ranked: dict[OperatorInstance, tuple[tuple[int, int], RelevantInstance]] = {}
+        protected = _protected_facts(difference, model)
+        ranked: dict[OperatorInstance, tuple[tuple[int, int, int], RelevantInstance]] = {}
         order = 0
         for clause in difference.clauses:
             for position, (positive, atom) in enumerate(clause.literals):
@@ -57,7 +63,8 @@ class AddListRelevance:
                     found = _resolve(schema, renamed, add_atom, clause, position)
                     if found is None:
                         continue
-                    key = (len(found.resolvent.literals), order)
+                    harm = _deleted_count(found.operator, protected)
+                    key = (len(found.resolvent.literals), harm, order)
                     order += 1
                     known = ranked.get(found.operator)
                     if known is None or key < known[0]:
@@ -108,6 +115,42 @@ def _resolve(
     ]
     resolvent = Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
     return RelevantInstance(OperatorInstance(schema, binding.items()), resolvent)
+
+
+def _protected_facts(difference: Difference, model: WorldModel) -> list[Atom]:
+    """Facts of ``model`` that could resolve away a literal of the difference: the facts
+    the proof rests on or could rest on."""
+    wanted = {
+        atom
+        for clause in (*difference.negated_goal, *difference.clauses)
+        for positive, atom in clause.literals
+        if not positive
+    }
+    return [
+        fact
+        for fact in model.facts()
+        if any(atom[0] == fact[0] and unify(atom, fact, {}) is not None for atom in wanted)
+    ]
+
+
+def _deleted_count(instance: OperatorInstance, facts: list[Atom]) -> int:
+    """How many of ``facts`` the instance's delete list may delete (unbound parameters and
+    wildcards match anything)."""
+    patterns, _ = instance.effects()
+    return sum(1 for fact in facts if any(_may_match(p, fact) for p in patterns))
+
+
+def _may_match(pattern: Term, term: Term) -> bool:
+    if pattern == WILDCARD or type(pattern) is Param:
+        return True
+    if type(pattern) is tuple:
+        return (
+            type(term) is tuple
+            and len(pattern) == len(term)
+            and pattern[0] == term[0]
+            and all(_may_match(p, t) for p, t in zip(pattern[1:], term[1:]))
+        )
+    return pattern == term
 
 
 @hookimpl

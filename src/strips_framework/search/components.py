@@ -16,6 +16,7 @@ if TYPE_CHECKING:
     from strips_framework.search.limits import Limits
     from strips_framework.search.node import Difference, Node, RelevantInstance
     from strips_framework.search.result import SearchResult
+    from strips_framework.world import WorldModel
 
 
 class DifferenceExtractor(Protocol):
@@ -30,9 +31,9 @@ class RelevanceFilter(Protocol):
     name: ClassVar[str]
 
     def relevant(
-        self, difference: Difference, operators: Sequence[OperatorSchema]
+        self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel
     ) -> list[RelevantInstance]:
-        """Relevant operator instances for ``difference``, best first."""
+        """Relevant operator instances for ``difference`` in ``model``, best first."""
         ...
 
 

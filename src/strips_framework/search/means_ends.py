@@ -146,7 +146,7 @@ class _Run:
         on_goal_list = {goal.operator for goal in node.goals}
         node.pending = [
             found
-            for found in self.relevance.relevant(node.difference, self.operators)
+            for found in self.relevance.relevant(node.difference, self.operators, node.model)
             if found.operator not in on_goal_list
         ]
         if node.pending:

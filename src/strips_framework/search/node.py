@@ -20,9 +20,14 @@ class Goal:
 
 @frozen
 class Difference:
-    """The clauses of an uncompleted proof that operators should help resolve away."""
+    """The clauses of an uncompleted proof that operators should help resolve away.
+
+    ``negated_goal`` keeps the clauses the proof started from: subsumption may have
+    removed them from ``clauses``, yet they tell which facts the proof rests on.
+    """
 
     clauses: tuple[Clause, ...] = field(converter=tuple)
+    negated_goal: tuple[Clause, ...] = field(default=(), converter=tuple)
 
     @property
     def complexity(self) -> int:
