@@ -114,7 +114,9 @@ def test_one_skolem_names_instance_never_repeats_a_name() -> None:
 def test_negated_goal_clauses() -> None:
     goal = parse_formula("exists x: AT(BOX1, x) & AT(BOX2, x)")
     (clause,) = negated_goal_clauses(goal, SkolemNames())
-    assert clause == Clause(((False, ("AT", "BOX1", 0)), (False, ("AT", "BOX2", 0))),)
+    assert clause == Clause(
+        ((False, ("AT", "BOX1", 0)), (False, ("AT", "BOX2", 0))),
+    )
     assert clause.label == "negated goal"
     (skolemized,) = negated_goal_clauses(parse_formula("forall x: P(x)"), SkolemNames())
     assert str(skolemized) == "~P(sk!1)"

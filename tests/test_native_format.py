@@ -86,9 +86,7 @@ def test_three_boxes_is_the_papers_problem() -> None:
             [("AT", k, m), ("ATR", m)],
         ),
     )
-    assert problem.goal == Exists(
-        [x], And([Atomic(("AT", f"BOX{i}", x)) for i in (1, 2, 3)])
-    )
+    assert problem.goal == Exists([x], And([Atomic(("AT", f"BOX{i}", x)) for i in (1, 2, 3)]))
     assert problem.unique_names
     assert problem.operators[0].source == SourceSpan(str(EXAMPLES / "three-boxes.strips"), 18)
 
@@ -108,10 +106,21 @@ def test_robot_world_tasks_share_the_world_of_table_1() -> None:
         assert formula_to_str(problem.goal) == goal
         worlds.add((problem.facts, problem.axioms, problem.operators))
         assert problem.primitive_predicates == {
-            ("AT", 2), ("NEXTTO", 2), ("INROOM", 2), ("ONFLOOR", 0), ("ON", 2), ("STATUS", 2)
+            ("AT", 2),
+            ("NEXTTO", 2),
+            ("INROOM", 2),
+            ("ONFLOOR", 0),
+            ("ON", 2),
+            ("STATUS", 2),
         }
         assert {o.name for o in problem.operators} == {
-            "goto1", "goto2", "pushto", "turnonlight", "climbonbox", "climboffbox", "gothrudoor"
+            "goto1",
+            "goto2",
+            "pushto",
+            "turnonlight",
+            "climbonbox",
+            "climboffbox",
+            "gothrudoor",
         }
         assert ("TYPE", "BOX1", "BOX") in problem.facts
         assert ("LOCINROOM", "f", "ROOM4") in problem.facts
@@ -129,7 +138,9 @@ def test_loader_is_registered_by_the_module_hook() -> None:
 
 
 def test_axioms_derived_facts_continuations_and_unique_names(tmp_path: Path) -> None:
-    text = BASE.replace("goal", "unique-names no\ngoal") + """
+    text = (
+        BASE.replace("goal", "unique-names no\ngoal")
+        + """
 axioms
   forall x, y: AT(BOX1, x) & x != y   # a comment
       -> ~AT(BOX1, y)
@@ -137,6 +148,7 @@ axioms
 derived
   NEAR(BOX1, a) <- AT(BOX1, b), ATR(a)
 """
+    )
     problem = NativeLoader().load(write(tmp_path, text))
     assert [formula_to_str(a) for a in problem.axioms] == [
         "forall x, y: AT(BOX1, x) & x != y -> ~AT(BOX1, y)",

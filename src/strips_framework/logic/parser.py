@@ -153,8 +153,7 @@ class Arities:
         if known[0] == arity:
             return None
         return (
-            f"expected {_arguments(known[0])} for {name} ({known[1]}) "
-            f"but found {_arguments(arity)}"
+            f"expected {_arguments(known[0])} for {name} ({known[1]}) but found {_arguments(arity)}"
         )
 
 
