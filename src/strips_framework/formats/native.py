@@ -83,7 +83,7 @@ def read_blocks(path: Path, shown: str, including: tuple[Path, ...] = ()) -> lis
             continue
         parser = block.header.parser()
         parser.next()
-        name = parser.expect("STRING")
+        name = parser.expect("STRING", "a quoted file name")
         parser.end()
         target = path.parent / name.text[1:-1]
         if target.resolve() in {p.resolve() for p in (*including, path)}:

@@ -66,19 +66,6 @@ _TOKEN = re.compile(
 
 _KEYWORDS = {"not": "NOT", "forall": "FORALL", "exists": "EXISTS", "true": "TRUE", "false": "FALSE"}
 
-#: How each token kind is named in "expected ..." messages.
-_EXPECTED_WORDS = {
-    "NAME": "a name",
-    "RPAREN": "')'",
-    "RBRACKET": "']'",
-    "LPAREN": "'('",
-    "COMMA": "','",
-    "COLON": "':'",
-    "SLASH": "'/'",
-    "LARROW": "'<-'",
-    "STRING": "a quoted file name",
-}
-
 
 @frozen
 class Token:
@@ -202,9 +189,10 @@ class WffParser:
     def accept(self, kind: str) -> Token | None:
         return self.next() if self.peek.kind == kind else None
 
-    def expect(self, kind: str, expected: str | None = None) -> Token:
+    def expect(self, kind: str, expected: str) -> Token:
+        """Consume a token of ``kind``; else fail with "expected <expected> but found ..."."""
         if self.peek.kind != kind:
-            raise self.error(expected or _EXPECTED_WORDS.get(kind, kind))
+            raise self.error(expected)
         return self.next()
 
     def end(self) -> None:
@@ -263,7 +251,7 @@ class WffParser:
         self._bound.extend(names)
         if self.accept("LBRACKET"):
             body = self.formula()
-            self.expect("RBRACKET")
+            self.expect("RBRACKET", "']'")
         elif self.accept("COLON"):
             body = self.formula()
         else:
@@ -280,7 +268,7 @@ class WffParser:
         token = self.peek
         if self.accept("LPAREN"):
             inner = self.formula()
-            self.expect("RPAREN")
+            self.expect("RPAREN", "')'")
             return inner
         if self.accept("TRUE"):
             return Truth(True)
@@ -331,7 +319,7 @@ class WffParser:
         return self._as_term(token, self._arguments() if self.peek.kind == "LPAREN" else None)
 
     def _arguments(self) -> tuple[Term | Var, ...]:
-        self.expect("LPAREN")
+        self.expect("LPAREN", "'('")
         args = [self.term()]
         while self.accept("COMMA"):
             args.append(self.term())
