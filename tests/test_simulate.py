@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import attrs
 import pytest
 
@@ -16,6 +18,7 @@ from strips_framework.logic.formulas import (
     Or,
     Var,
 )
+from strips_framework.formats.native import NativeLoader
 from strips_framework.logic.terms import Param
 from strips_framework.problem import WILDCARD, DerivedFact, OperatorSchema, Problem
 from strips_framework.simulate import SimulationError, replay
@@ -154,6 +157,39 @@ def test_three_boxes_plan_of_the_paper_is_valid() -> None:
 def test_paper_plans_for_the_robot_world_are_valid(goal: Formula, plan: list[str]) -> None:
     result = replay(robot_world(goal), plan)
     assert result.valid, result.message
+
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+PAPER_PLANS = {
+    "three-boxes.strips": ["goto(a, c)", "push(BOX2, c, b)", "goto(b, d)", "push(BOX3, d, b)"],
+    "robot-world/light.strips": [
+        "goto2(BOX1)", "climbonbox(BOX1)", "climboffbox(BOX1)", "pushto(BOX1, LIGHTSWITCH1)",
+        "climbonbox(BOX1)", "turnonlight(LIGHTSWITCH1)",
+    ],
+    "robot-world/boxes.strips": [
+        "goto2(BOX2)", "pushto(BOX2, BOX1)", "goto2(BOX3)", "pushto(BOX3, BOX2)",
+    ],
+    "robot-world/other-room.strips": [
+        "goto2(DOOR1)", "gothrudoor(DOOR1, ROOM1, ROOM5)", "goto2(DOOR4)",
+        "gothrudoor(DOOR4, ROOM5, ROOM4)", "goto1(f)",
+    ],
+}
+
+
+@pytest.mark.parametrize("name", sorted(PAPER_PLANS))
+def test_paper_plans_replay_on_the_native_examples(name: str) -> None:
+    loaded = NativeLoader().load(EXAMPLES / name)
+    result = replay(loaded, PAPER_PLANS[name])
+    assert result.valid, result.message
+    assert not replay(loaded, PAPER_PLANS[name][:-1]).valid
+
+
+def test_optimal_light_plan_replays_on_the_native_example_in_both_syntaxes() -> None:
+    loaded = NativeLoader().load(EXAMPLES / "robot-world" / "light.strips")
+    assert replay(loaded, OPTIMAL_LIGHT).valid
+    ipc = ["(goto2 box1)", "(pushto box1 lightswitch1)", "(climbonbox box1)",
+           "(turnonlight lightswitch1)"]
+    assert replay(loaded, ipc).valid
 
 
 def test_ipc_steps_match_names_and_constants_case_insensitively() -> None:
