@@ -11,7 +11,7 @@ from strips_framework.search.node import Node
 
 @frozen
 class BreadthFirst:
-    """Score = operators applied so far (g, with h = 0).
+    """Blind search: the score is the operators applied so far (g, with h = 0).
 
     With first-in-first-out tie-breaking this explores world models in order of plan length,
     i.e. breadth-first; in an A*-style strategy it is uniform-cost search. Admissible:

@@ -13,9 +13,10 @@ from strips_evaluators.options import weight
 
 @frozen
 class GoalCount:
-    """Score = h + ``cost_weight`` * operators applied so far, where
-    h = (goals on the goal list - 1) + literals in the smallest difference clause.
+    """Goals left and unproved literals, plus ``cost_weight`` times the operators applied.
 
+    Score = h + ``cost_weight`` * operators applied so far, where
+    h = (goals on the goal list - 1) + literals in the smallest difference clause.
     h counts the subgoals still to be achieved and the unproved literals of the best
     partial proof of the first goal: each usually needs at least one operator. It is not
     admissible, since one operator's add list can resolve away several literals (or a later

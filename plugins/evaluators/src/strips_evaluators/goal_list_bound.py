@@ -12,7 +12,9 @@ from strips_evaluators.features import subgoals
 
 @frozen
 class GoalListBound:
-    """Score = operators applied so far + h, where
+    """Admissible A* score: operators applied, plus one per goal left and unproved goal.
+
+    Score = operators applied so far + h, where
     h = (goals on the goal list - 1) + (1 if the first goal is unproved else 0).
 
     Why h never overestimates the operators still needed on any plan through the node:
