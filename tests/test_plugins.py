@@ -20,7 +20,7 @@ HOOKS = [
 
 
 def test_there_are_hooks_for_every_kind():
-    assert {hook for hook, _ in KINDS.values()} == {name for name, _ in HOOKS}
+    assert {hook for hook, _, _ in KINDS.values()} == {name for name, _ in HOOKS}
 
 
 @pytest.mark.parametrize(("name", "spec"), HOOKS, ids=[name for name, _ in HOOKS])

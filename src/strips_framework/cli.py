@@ -9,6 +9,8 @@ import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
+import attrs
+
 from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.planner import Planner
@@ -107,8 +109,8 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
 
 
 def _plugins(planner: Planner) -> int:
-    for kind, (_, words) in KINDS.items():
-        print(f"{words}s:")
+    for kind, (_, _, plural) in KINDS.items():
+        print(f"{plural}:")
         for registration in planner.registry.registrations(kind):
             origin = registration.distribution or "builtin"
             print(f"  {registration.name:<20} {origin} ({registration.plugin})")
@@ -116,5 +118,8 @@ def _plugins(planner: Planner) -> int:
             if doc:
                 print(f"      {doc[0]}")
             for option in registration.options():
-                print(f"      {option.name} = {option.default!r}")
+                default = option.default
+                if isinstance(default, attrs.Factory):  # type: ignore[arg-type]
+                    default = default.factory()
+                print(f"      {option.name} = {default!r}")
     return 0

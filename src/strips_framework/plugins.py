@@ -28,14 +28,17 @@ DEFAULT_PLUGINS = (
     "strips_framework.search.astar",
 )
 
-#: Each kind of implementation: (config key, hook that registers it, words for messages).
+#: Each kind of implementation, by its config key: the hook that registers it, and the
+#: words for it in messages (singular, plural).
 KINDS = {
-    "strategy": ("strips_register_strategies", "search strategy"),
-    "prover": ("strips_register_provers", "prover"),
-    "difference": ("strips_register_difference_extractors", "difference extractor"),
-    "relevance": ("strips_register_relevance_filters", "relevance filter"),
-    "evaluator": ("strips_register_evaluators", "evaluator"),
-    "loader": ("strips_register_loaders", "problem loader"),
+    "strategy": ("strips_register_strategies", "search strategy", "search strategies"),
+    "prover": ("strips_register_provers", "prover", "provers"),
+    "difference": (
+        "strips_register_difference_extractors", "difference extractor", "difference extractors"
+    ),
+    "relevance": ("strips_register_relevance_filters", "relevance filter", "relevance filters"),
+    "evaluator": ("strips_register_evaluators", "evaluator", "evaluators"),
+    "loader": ("strips_register_loaders", "problem loader", "problem loaders"),
 }
 
 #: Distributions known to provide implementations, for the hint in "not registered" errors.
@@ -93,7 +96,7 @@ class Registry:
             id(plugin): dist.project_name for plugin, dist in manager.list_plugin_distinfo()
         }
         self._by_kind: dict[str, dict[str, Registration]] = {kind: {} for kind in KINDS}
-        for kind, (hook_name, words) in KINDS.items():
+        for kind, (hook_name, words, _) in KINDS.items():
             caller = getattr(manager.hook, hook_name)
             for impl in reversed(caller.get_hookimpls()):  # registration order
                 for cls in impl.function() or ():

@@ -78,22 +78,25 @@ class AStarSearch:
 
         queue: list[tuple[float, int, Node]] = []
         counter = itertools.count()
+        # The cheapest known cost of reaching each model; a node reaching it at no lower
+        # cost is a duplicate and is never made (or, if superseded later, never expanded).
         best_cost: dict[WorldModel, int] = {}
         try:
             root = make(goal_prover.root_model(), None, ())
+            best_cost[root.model] = 0
             heapq.heappush(queue, (evaluator.evaluate(root), next(counter), root))
             while queue:
                 tree.check_time()
                 _, _, node = heapq.heappop(queue)
                 if node.difference is None:
                     return tree.result(SOLVED, node)
-                if best_cost.get(node.model, node.cost + 1) <= node.cost:
+                if node.cost > best_cost[node.model]:
                     continue
-                best_cost[node.model] = node.cost
                 for instance in self._applicable(problem, goal_prover, node.model):
                     model = instance.apply(node.model)
                     if best_cost.get(model, node.cost + 2) <= node.cost + 1:
                         continue
+                    best_cost[model] = node.cost + 1
                     child = make(model, node, (*node.plan, instance), instance)
                     heapq.heappush(queue, (evaluator.evaluate(child), next(counter), child))
         except LimitReached as limit:

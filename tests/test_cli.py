@@ -1,0 +1,88 @@
+"""The ``strips`` command line: plans, statistics, JSON, DOT trees, and clear errors."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from strips_framework.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+THREE_BOXES = ROOT / "examples" / "three-boxes.strips"
+
+
+def test_solve_prints_the_plan_ipc_style_and_table_2_figures(capsys):
+    assert main(["solve", str(THREE_BOXES)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    plan = [line for line in lines if not line.startswith(";")]
+    assert len(plan) == 4
+    assert all(line.startswith("(") and line.endswith(")") for line in plan)
+    assert "; nodes: 9 in the tree, 9 on the solution path" in lines
+    assert "; operator applications: 4 in the tree, 4 on the solution path" in lines
+
+
+def test_solve_json_plan_file_and_tree(tmp_path, capsys):
+    plan_file, tree = tmp_path / "plan.txt", tmp_path / "tree.dot"
+    args = ["solve", str(THREE_BOXES), "--json", "--plan-file", str(plan_file), "--tree", str(tree)]
+    assert main(args) == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert payload["status"] == "solved"
+    assert payload["statistics"]["nodes"] == 9
+    assert len(payload["plan"]) == 4
+    written = [l for l in plan_file.read_text().splitlines() if not l.startswith(";")]
+    assert written == [f"({step.replace('(', ' ').replace(', ', ' ').rstrip(')')})" for step in payload["plan"]]
+    dot = tree.read_text()
+    assert dot.startswith("digraph search_tree {")
+    assert dot.count("->") == 8  # 9 nodes in a tree
+    assert dot.count("color=red") >= 9  # the solution path is highlighted
+
+
+def test_malformed_problem_is_reported_with_file_and_line(tmp_path, capsys):
+    bad = tmp_path / "bad.strips"
+    bad.write_text("problem bad\nconstants a\nfacts\n  ATR(a\ngoal ATR(a)\n")
+    assert main(["solve", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"strips: error: {bad}:4:")
+    assert "Traceback" not in err
+
+
+def test_missing_problem_file(tmp_path, capsys):
+    assert main(["solve", str(tmp_path / "nope.strips")]) == 2
+    assert "no such problem file" in capsys.readouterr().err
+
+
+def test_unknown_plugin_name_in_config(tmp_path, capsys):
+    config = tmp_path / "strips.toml"
+    config.write_text('[prover]\nname = "z3"\n')
+    assert main(["solve", str(THREE_BOXES), "--config", str(config)]) == 2
+    err = capsys.readouterr().err
+    assert "prover 'z3' is not registered (available: resolution); is strips-z3-prover installed?" in err
+
+
+def test_plugins_lists_implementations_with_distributions_and_options(capsys):
+    assert main(["plugins"]) == 0
+    out = capsys.readouterr().out
+    assert "strips-resolution-prover" in out and "strips-evaluators" in out
+    assert "means-ends" in out and "max_goals = 8" in out
+
+
+def test_installed_command_reports_errors_without_a_traceback(tmp_path):
+    bad = tmp_path / "bad.strips"
+    bad.write_text("problem bad\ngoal FOO(\n")
+    run = subprocess.run(
+        [Path(sys.executable).parent / "strips", "solve", str(bad)],
+        capture_output=True, text=True, check=False,
+    )
+    assert run.returncode == 2
+    assert "Traceback" not in run.stderr
+    assert f"{bad}:2:" in run.stderr
+
+
+@pytest.mark.parametrize("status", ["Unsatisfiable"])
+def test_prove_reports_an_szs_status(tmp_path, capsys, status):
+    problem = tmp_path / "tiny.p"
+    problem.write_text("cnf(a, axiom, p(a)).\ncnf(b, negated_conjecture, ~p(X)).\n")
+    assert main(["prove", str(problem)]) == 0
+    assert f"SZS status {status}" in capsys.readouterr().out
