@@ -26,7 +26,7 @@ SKOLEM_PREFIX = "sk!"
 EQUALITY = "="
 
 
-@frozen(order=True)
+@frozen(order=True, cache_hash=True)
 class Param:
     """An operator-schema parameter such as ``m`` in ``goto(m, n)``.
 
