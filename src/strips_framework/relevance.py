@@ -24,8 +24,8 @@ from attrs import frozen
 
 from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.formulas import params_in
-from strips_framework.logic.terms import Atom, Param, Term, params_of, variables_of
+from strips_framework.logic.formulas import And, Atomic, params_in
+from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.operators import OperatorInstance
 from strips_framework.problem import WILDCARD, OperatorSchema
@@ -44,6 +44,10 @@ class AddListRelevance:
     An instance is dropped when a parameter that only its effects mention (not its
     precondition) stays unbound or is bound to another operator's parameter: applying it
     would need a value that neither this resolution nor the precondition proof provides.
+    It is also dropped when its precondition can never hold: a conjunct is a ground atom
+    of a *rigid* predicate (one no operator adds and no rule of the model concludes) that
+    is not a fact of the model. Facts of rigid predicates can only be deleted, so such an
+    atom never becomes true (``pushto(ROBOT, BOX2)`` needs ``PUSHABLE(ROBOT)``).
     """
 
     name: ClassVar[str] = "add-list"
@@ -53,6 +57,7 @@ class AddListRelevance:
     ) -> list[RelevantInstance]:
         by_predicate = _add_atoms_by_predicate(operators)
         protected = _protected_facts(difference, model)
+        rigid = _rigid_predicates(operators, model)
         ranked: dict[OperatorInstance, tuple[tuple[int, int, int], RelevantInstance]] = {}
         order = 0
         for clause in difference.clauses:
@@ -61,7 +66,7 @@ class AddListRelevance:
                     continue
                 for schema, renamed, add_atom in by_predicate.get((atom[0], len(atom)), ()):
                     found = _resolve(schema, renamed, add_atom, clause, position)
-                    if found is None:
+                    if found is None or _never_applicable(found.operator, rigid, model):
                         continue
                     harm = _deleted_count(found.operator, protected)
                     key = (len(found.resolvent.literals), harm, order)
@@ -115,6 +120,36 @@ def _resolve(
     ]
     resolvent = Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
     return RelevantInstance(OperatorInstance(schema, binding.items()), resolvent)
+
+
+def _rigid_predicates(
+    operators: Sequence[OperatorSchema], model: WorldModel
+) -> set[tuple[str, int]]:
+    """Predicates that no operator adds and no non-unit clause of the model concludes."""
+    concluded = {
+        (atom[0], len(atom) - 1)
+        for clause in model.clauses()
+        if not clause.is_unit
+        for positive, atom in clause.literals
+        if positive
+    }
+    added = {(atom[0], len(atom) - 1) for schema in operators for atom in schema.add_list}
+    facts = {(atom[0], len(atom) - 1) for atom in model.facts()}
+    return facts - added - concluded
+
+
+def _never_applicable(
+    instance: OperatorInstance, rigid: set[tuple[str, int]], model: WorldModel
+) -> bool:
+    precondition = instance.precondition()
+    conjuncts = precondition.parts if isinstance(precondition, And) else (precondition,)
+    return any(
+        isinstance(part, Atomic)
+        and (part.atom[0], len(part.atom) - 1) in rigid
+        and is_ground(part.atom)
+        and not model.holds(part.atom)
+        for part in conjuncts
+    )
 
 
 def _protected_facts(difference: Difference, model: WorldModel) -> list[Atom]:
