@@ -55,3 +55,17 @@ def test_instances_that_would_undo_what_the_proof_rests_on_rank_last():
     model = WorldModel(InitialModel([Clause([(True, ("NEXTTO", "BOX1", "BOX2"))])]))
     found = AddListRelevance().relevant(difference, [pushto], model)
     assert [str(r.operator) for r in found] == ["pushto(BOX3, BOX2)", "pushto(BOX2, BOX3)"]
+
+
+def test_instances_needing_a_rigid_fact_that_does_not_hold_are_dropped():
+    # PUSHABLE is rigid: no operator adds it and no rule concludes it.
+    pushto = OperatorSchema(
+        "pushto", [m, n], And([Atomic(("PUSHABLE", m)), Atomic(("NEXTTO", "ROBOT", m))]),
+        [("NEXTTO", m, n)], [("NEXTTO", m, "$")],
+    )
+    model = WorldModel(InitialModel([Clause([(True, ("PUSHABLE", "BOX1"))])]))
+    difference = Difference([
+        Clause([(False, ("NEXTTO", "BOX1", "a"))]), Clause([(False, ("NEXTTO", "ROBOT", "a"))]),
+    ])
+    found = AddListRelevance().relevant(difference, [pushto], model)
+    assert [str(r.operator) for r in found] == ["pushto(BOX1, a)"]
