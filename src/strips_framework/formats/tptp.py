@@ -1,0 +1,479 @@
+"""TPTP problems: read ``cnf``/``fof`` files, pose them to a prover, report an SZS status.
+
+The reader is a hand-written recursive-descent parser over a small tokenizer: TPTP's
+grammar for first-order formulas is tiny, and hand-written code gives exact error
+positions ("expected ')'") without a grammar-debugging detour. Formulas become the core
+AST of :mod:`strips_framework.logic.formulas`: TPTP variables are :class:`Var`, functors and
+constants are strings and tuples, free variables of ``cnf`` clauses are wrapped in
+:class:`Forall`.
+
+Posing a problem (:meth:`TptpProblem.task`): conjectures are negated, and the negated
+conjecture is the set of support; a ``question`` ``? [X, Y] : F`` becomes the STRIPS-style
+goal ``F(x, y)`` with parameters ``x``, ``y`` (QA3, paper III.A), so the refutation's
+parameter bindings are the answer. Without any goal role every formula is in the set of
+support.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from attrs import frozen
+
+from strips_framework.errors import InputError
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.cnf import SkolemNames, clausify
+from strips_framework.logic.formulas import (
+    And,
+    Atomic,
+    Exists,
+    Forall,
+    Formula,
+    Iff,
+    Implies,
+    Not,
+    Or,
+    Truth,
+    Var,
+)
+from strips_framework.logic.terms import EQUALITY, Param, Term
+from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
+
+AXIOM_ROLES = frozenset(
+    {"axiom", "hypothesis", "definition", "lemma", "theorem", "assumption", "plain", "unknown"}
+)
+GOAL_ROLES = frozenset({"conjecture", "negated_conjecture", "question"})
+
+_TOKEN = re.compile(
+    r"""
+    (?P<space>\s+|%[^\n]*|/\*.*?\*/)
+  | (?P<word>[a-z][A-Za-z0-9_]*)
+  | (?P<var>[A-Z][A-Za-z0-9_]*)
+  | (?P<dollar>\$\$?[a-z][A-Za-z0-9_]*)
+  | (?P<quoted>'(?:[^'\\]|\\.)*')
+  | (?P<distinct>"(?:[^"\\]|\\.)*")
+  | (?P<number>[+-]?[0-9]+(?:[./][0-9]+)?(?:[eE][+-]?[0-9]+)?)
+  | (?P<op><=>|<~>|=>|<=|~\||~&|!=|[()\[\],.:!?~&|=])
+    """,
+    re.VERBOSE | re.DOTALL,
+)
+
+_BINARY = {"=>", "<=", "<=>", "<~>", "~|", "~&"}
+
+
+@frozen
+class _Token:
+    kind: str  # "word", "var", "dollar", "quoted", "distinct", "number", "op", "end"
+    text: str
+    line: int
+    column: int
+
+
+def _tokenize(text: str, path: str) -> list[_Token]:
+    tokens: list[_Token] = []
+    pos, line, line_start = 0, 1, 0
+    while pos < len(text):
+        found = _TOKEN.match(text, pos)
+        if found is None:
+            raise InputError(path, line, pos - line_start + 1, f"unexpected character {text[pos]!r}")
+        kind = found.lastgroup or ""
+        if kind != "space":
+            tokens.append(_Token(kind, found.group(), line, pos - line_start + 1))
+        newlines = found.group().count("\n")
+        if newlines:
+            line += newlines
+            line_start = found.start() + found.group().rfind("\n") + 1
+        pos = found.end()
+    tokens.append(_Token("end", "", line, pos - line_start + 1))
+    return tokens
+
+
+@frozen
+class TptpFormula:
+    """One annotated formula: ``language(name, role, formula)``."""
+
+    name: str
+    role: str
+    language: str  # "cnf" or "fof"
+    formula: Formula
+    line: int
+
+
+class _Parser:
+    """Recursive descent over the tokens of one file."""
+
+    def __init__(self, text: str, path: str) -> None:
+        self.path = path
+        self.tokens = _tokenize(text, path)
+        self.pos = 0
+
+    # -- token helpers --------------------------------------------------------------------
+
+    def peek(self) -> _Token:
+        return self.tokens[self.pos]
+
+    def next(self) -> _Token:
+        token = self.tokens[self.pos]
+        self.pos += 1
+        return token
+
+    def error(self, expected: str, token: _Token | None = None) -> InputError:
+        token = token or self.peek()
+        found = repr(token.text) if token.kind != "end" else "end of file"
+        return InputError(self.path, token.line, token.column, f"expected {expected}, found {found}")
+
+    def expect(self, text: str) -> _Token:
+        token = self.peek()
+        if token.kind != "op" or token.text != text:
+            raise self.error(f"'{text}'")
+        return self.next()
+
+    def at(self, text: str) -> bool:
+        token = self.peek()
+        return token.kind == "op" and token.text == text
+
+    # -- file level -------------------------------------------------------------------------
+
+    def file(self) -> list[TptpFormula]:
+        formulas: list[TptpFormula] = []
+        while self.peek().kind != "end":
+            token = self.next()
+            if token.kind == "word" and token.text == "include":
+                raise InputError(self.path, token.line, token.column,
+                                 "include(...) is not supported: inline the included axioms")
+            if token.kind != "word" or token.text not in ("cnf", "fof"):
+                raise self.error("cnf(...) or fof(...)", token)
+            formulas.append(self.annotated(token))
+        return formulas
+
+    def annotated(self, start: _Token) -> TptpFormula:
+        self.expect("(")
+        name = self.name("a formula name")
+        self.expect(",")
+        role_token = self.next()
+        if role_token.kind != "word" or role_token.text not in AXIOM_ROLES | GOAL_ROLES:
+            raise self.error("a formula role such as axiom or conjecture", role_token)
+        self.expect(",")
+        formula = self.formula()
+        if start.text == "cnf" or role_token.text != "question":
+            formula = _close(formula)
+        if self.at(","):
+            self.next()
+            self.skip_annotations()
+        self.expect(")")
+        self.expect(".")
+        return TptpFormula(name, role_token.text, start.text, formula, start.line)
+
+    def name(self, what: str) -> str:
+        token = self.next()
+        if token.kind in ("word", "number"):
+            return token.text
+        if token.kind == "quoted":
+            return _unquote(token.text)
+        raise self.error(what, token)
+
+    def skip_annotations(self) -> None:
+        """Skip a source/useful-info annotation: balanced brackets up to the closing ')'."""
+        depth = 0
+        while True:
+            token = self.peek()
+            if token.kind == "end":
+                raise self.error("')'")
+            if token.kind == "op" and token.text in "([":
+                depth += 1
+            elif token.kind == "op" and token.text in ")]":
+                if depth == 0:
+                    return
+                depth -= 1
+            self.next()
+
+    # -- formulas ---------------------------------------------------------------------------
+
+    def formula(self) -> Formula:
+        """A binary formula: ``&`` binds tighter than ``|``, both tighter than ``=>`` etc."""
+        left = self.disjunction()
+        token = self.peek()
+        if token.kind == "op" and token.text in _BINARY:
+            self.next()
+            right = self.disjunction()
+            return _binary(token.text, left, right)
+        return left
+
+    def disjunction(self) -> Formula:
+        parts = [self.conjunction()]
+        while self.at("|"):
+            self.next()
+            parts.append(self.conjunction())
+        return parts[0] if len(parts) == 1 else Or(parts)
+
+    def conjunction(self) -> Formula:
+        parts = [self.unit()]
+        while self.at("&"):
+            self.next()
+            parts.append(self.unit())
+        return parts[0] if len(parts) == 1 else And(parts)
+
+    def unit(self) -> Formula:
+        token = self.peek()
+        if token.kind == "op":
+            if token.text == "(":
+                self.next()
+                inner = self.formula()
+                self.expect(")")
+                return inner
+            if token.text == "~":
+                self.next()
+                return Not(self.unit())
+            if token.text in ("!", "?"):
+                self.next()
+                variables = self.variable_list()
+                self.expect(":")
+                body = self.unit()
+                return Forall(variables, body) if token.text == "!" else Exists(variables, body)
+        return self.atomic()
+
+    def variable_list(self) -> list[Var]:
+        self.expect("[")
+        variables = [self.variable()]
+        while self.at(","):
+            self.next()
+            variables.append(self.variable())
+        self.expect("]")
+        return variables
+
+    def variable(self) -> Var:
+        token = self.next()
+        if token.kind != "var":
+            raise self.error("a variable (a capitalised name)", token)
+        return Var(token.text)
+
+    def atomic(self) -> Formula:
+        token = self.peek()
+        if token.kind == "dollar" and token.text in ("$true", "$false"):
+            self.next()
+            return Truth(token.text == "$true")
+        if token.kind not in ("word", "quoted", "var", "distinct", "number", "dollar"):
+            raise self.error("a formula")
+        left = self.term()
+        if self.at("=") or self.at("!="):
+            negated = self.next().text == "!="
+            equation = Atomic((EQUALITY, left, self.term()))
+            return Not(equation) if negated else equation
+        if token.kind in ("var", "distinct", "number"):
+            raise self.error("'=' or '!=' after a term", self.peek())
+        return Atomic(left if type(left) is tuple else (left,))
+
+    def term(self) -> Term | Var:
+        token = self.next()
+        if token.kind == "var":
+            return Var(token.text)
+        if token.kind in ("distinct", "number"):
+            return token.text
+        if token.kind == "quoted":
+            symbol = _unquote(token.text)
+        elif token.kind in ("word", "dollar"):
+            symbol = token.text
+        else:
+            raise self.error("a term", token)
+        if not self.at("("):
+            return symbol
+        self.next()
+        args = [self.term()]
+        while self.at(","):
+            self.next()
+            args.append(self.term())
+        self.expect(")")
+        return (symbol, *args)
+
+
+def _unquote(text: str) -> str:
+    """``'abc'`` is the symbol ``abc``; other quoted names keep their quotes to stay apart."""
+    inner = re.sub(r"\\(.)", r"\1", text[1:-1])
+    return inner if re.fullmatch(r"[a-z][A-Za-z0-9_]*", inner) else text
+
+
+def _binary(op: str, left: Formula, right: Formula) -> Formula:
+    if op == "=>":
+        return Implies(left, right)
+    if op == "<=":
+        return Implies(right, left)
+    if op == "<=>":
+        return Iff(left, right)
+    if op == "<~>":
+        return Not(Iff(left, right))
+    if op == "~|":
+        return Not(Or((left, right)))
+    return Not(And((left, right)))
+
+
+def _free_variables(formula: Formula, bound: frozenset[Var], out: dict[Var, None]) -> None:
+    def term(t: Term | Var) -> None:
+        if isinstance(t, Var):
+            if t not in bound:
+                out[t] = None
+        elif type(t) is tuple:
+            for arg in t[1:]:
+                term(arg)
+
+    if isinstance(formula, Atomic):
+        for arg in formula.atom[1:]:
+            term(arg)
+    elif isinstance(formula, Not):
+        _free_variables(formula.body, bound, out)
+    elif isinstance(formula, (And, Or)):
+        for part in formula.parts:
+            _free_variables(part, bound, out)
+    elif isinstance(formula, Implies):
+        _free_variables(formula.premise, bound, out)
+        _free_variables(formula.conclusion, bound, out)
+    elif isinstance(formula, Iff):
+        _free_variables(formula.left, bound, out)
+        _free_variables(formula.right, bound, out)
+    elif isinstance(formula, (Forall, Exists)):
+        _free_variables(formula.body, bound | frozenset(formula.variables), out)
+
+
+def _close(formula: Formula) -> Formula:
+    """Universally quantify the free variables (cnf clauses; stray free ones in fof)."""
+    free: dict[Var, None] = {}
+    _free_variables(formula, frozenset(), free)
+    return Forall(tuple(free), formula) if free else formula
+
+
+# -- problems ------------------------------------------------------------------------------
+
+
+@frozen
+class TptpProblem:
+    """A parsed TPTP file."""
+
+    path: str
+    formulas: tuple[TptpFormula, ...]
+
+    @property
+    def name(self) -> str:
+        return Path(self.path).name.removesuffix(".p")
+
+    @property
+    def has_conjecture(self) -> bool:
+        """Whether the status is about a conjecture (Theorem) rather than a clause set."""
+        return any(f.role in ("conjecture", "question") for f in self.formulas)
+
+    @property
+    def question_variables(self) -> tuple[Param, ...]:
+        """The parameters standing for a question's existential variables, in order."""
+        params: list[Param] = []
+        for f in self.formulas:
+            if f.role == "question" and isinstance(f.formula, Exists):
+                params.extend(Param(v.name) for v in f.formula.variables)
+        return tuple(params)
+
+    def task(self, effort: int = 1000, *, max_answers: int = 1,
+             unique_names: bool = False) -> ProofTask:
+        """The proof task: negated goals are the set of support, the rest are axioms."""
+        skolem = SkolemNames()
+        axioms: list[Clause] = []
+        support: list[Clause] = []
+        goals = [f for f in self.formulas if f.role in GOAL_ROLES]
+        for f in self.formulas:
+            if f.role == "negated_conjecture":
+                support.extend(clausify(f.formula, label=f.name, skolem=skolem))
+            elif f.role in ("conjecture", "question"):
+                support.extend(clausify(Not(_goal_body(f)), label=f.name, skolem=skolem))
+            else:
+                clauses = clausify(f.formula, label=f.name, skolem=skolem)
+                (axioms if goals else support).extend(clauses)
+        return ProofTask(axioms, support, effort=effort, max_answers=max_answers,
+                         unique_names=unique_names)
+
+
+def _goal_body(f: TptpFormula) -> Formula:
+    """A conjecture as is; a question's outer existential variables become parameters."""
+    if f.role != "question" or not isinstance(f.formula, Exists):
+        return _close(f.formula)
+    params = {v: Param(v.name) for v in f.formula.variables}
+    return _close(_vars_to_params(f.formula.body, params))
+
+
+def _vars_to_params(formula: Formula, params: dict[Var, Param]) -> Formula:
+    """Replace the free occurrences of the question's variables by parameters."""
+
+    def term(t: Term | Var) -> Term | Var:
+        if isinstance(t, Var):
+            return params.get(t, t)
+        if type(t) is tuple:
+            return (t[0], *map(term, t[1:]))
+        return t
+
+    if isinstance(formula, Atomic):
+        return Atomic((formula.atom[0], *map(term, formula.atom[1:])))
+    if isinstance(formula, Truth):
+        return formula
+    if isinstance(formula, Not):
+        return Not(_vars_to_params(formula.body, params))
+    if isinstance(formula, And):
+        return And(_vars_to_params(p, params) for p in formula.parts)
+    if isinstance(formula, Or):
+        return Or(_vars_to_params(p, params) for p in formula.parts)
+    if isinstance(formula, Implies):
+        return Implies(_vars_to_params(formula.premise, params),
+                       _vars_to_params(formula.conclusion, params))
+    if isinstance(formula, Iff):
+        return Iff(_vars_to_params(formula.left, params), _vars_to_params(formula.right, params))
+    inner = {v: p for v, p in params.items() if v not in formula.variables}
+    body = _vars_to_params(formula.body, inner)
+    return Forall(formula.variables, body) if isinstance(formula, Forall) else Exists(
+        formula.variables, body)
+
+
+def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:
+    """Parse TPTP text; raise :class:`InputError` at the first token that does not fit."""
+    return TptpProblem(path, tuple(_Parser(text, path).file()))
+
+
+def load_tptp(path: str | Path) -> TptpProblem:
+    return parse_tptp(Path(path).read_text(encoding="utf-8"), str(path))
+
+
+def szs_status(problem: TptpProblem, result: ProofResult) -> str:
+    """The SZS status of ``result`` for ``problem``.
+
+    With a conjecture: Theorem, CounterSatisfiable (saturated) or GaveUp; otherwise
+    Unsatisfiable, Satisfiable or GaveUp. A question whose search saturated is GaveUp: its
+    parameters may not be bound to Skolem terms or terms with variables (paper, III.A), so
+    saturation shows only that no such answer exists, not that the conjecture is false.
+    """
+    if result.status == PROVED:
+        return "Theorem" if problem.has_conjecture else "Unsatisfiable"
+    if result.status == SATURATED and not problem.question_variables:
+        return "CounterSatisfiable" if problem.has_conjecture else "Satisfiable"
+    return GAVE_UP
+
+
+def _tptp_term(term: Term) -> str:
+    if type(term) is tuple:
+        return f"{term[0]}({','.join(_tptp_term(a) for a in term[1:])})"
+    return str(term)
+
+
+def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
+    """``[[a, b], ...|_]``: one tuple per answer, ``_`` for a variable the proof left free."""
+    params = problem.question_variables
+    if not params or not result.answers:
+        return None
+    tuples = []
+    for answer in result.answers:
+        bound = dict(answer)
+        values = [_tptp_term(bound[p]) if p in bound else "_" for p in params]
+        tuples.append(f"[{', '.join(values)}]")
+    return f"[{', '.join(tuples)}|_]"
+
+
+def szs_report(problem: TptpProblem, result: ProofResult) -> str:
+    """The lines a TPTP prover prints: the status and, for questions, the answers."""
+    lines = [f"% SZS status {szs_status(problem, result)} for {problem.name}"]
+    answers = szs_answers(problem, result)
+    if answers is not None:
+        lines.append(f"% SZS answers Tuple {answers} for {problem.name}")
+    return "\n".join(lines)
