@@ -10,6 +10,7 @@ from __future__ import annotations
 from strips_framework.logic.formulas import formula_to_str
 from strips_framework.search.node import Node
 from strips_framework.search.result import SearchResult
+from strips_framework.world import WorldModel
 
 _MAX_GOAL_TEXT = 60
 
@@ -39,9 +40,10 @@ def search_tree_to_dot(result: SearchResult, title: str = "STRIPS search tree") 
         '  node [shape=box, fontname="Helvetica", fontsize=10];',
         '  edge [fontname="Helvetica", fontsize=9];',
     ]
+    model_names: dict[WorldModel, str] = {}
     for node in result.nodes:
-        steps = len(node.plan)
-        model = "M0" if steps == 0 else f"M{node.id} (M0 + {steps} operator{'s' * (steps > 1)})"
+        # Models are numbered in order of appearance, as M0, M1, ... in the paper's figure.
+        model = model_names.setdefault(node.model, f"M{len(model_names)}")
         label = f"n{node.id}: {model}\\l{_goal_text(node)}"
         style = ', color=red, penwidth=2' if id(node) in on_path else ""
         if node is result.solution:
