@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import warnings
+
 import pytest
 
 from strips_framework.config import Config
 from strips_framework.planner import Planner
 from strips_framework.plugins import Registry
+
 
 @pytest.fixture(scope="session")
 def registry() -> Registry:

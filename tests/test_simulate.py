@@ -7,6 +7,7 @@ from pathlib import Path
 import attrs
 import pytest
 
+from strips_framework.formats.native import NativeLoader
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -18,7 +19,6 @@ from strips_framework.logic.formulas import (
     Or,
     Var,
 )
-from strips_framework.formats.native import NativeLoader
 from strips_framework.logic.terms import Param
 from strips_framework.problem import WILDCARD, DerivedFact, OperatorSchema, Problem
 from strips_framework.simulate import SimulationError, replay
@@ -89,7 +89,7 @@ def robot_world(goal: Formula) -> Problem:
     for i in range(1, 5):
         facts += [("TYPE", f"DOOR{i}", "DOOR"), ("CONNECTS", f"DOOR{i}", f"ROOM{i}", "ROOM5")]
     robot_moves = [("AT", "ROBOT", S), ("NEXTTO", "ROBOT", S)]
-    in_robots_room = lambda place: Exists(  # noqa: E731
+    in_robots_room = lambda place: Exists(
         [x], conj(atom("INROOM", "ROBOT", x), atom(place, m, x))
     )
     operators = [

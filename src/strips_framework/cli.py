@@ -69,10 +69,14 @@ def _statistics_lines(result: SearchResult) -> list[str]:
         f"; status: {result.status}",
         f"; plan length: {len(result.plan) if result.plan is not None else '-'}",
         f"; nodes: {s.nodes} in the tree, {s.path_nodes} on the solution path",
-        f"; operator applications: {s.applications} in the tree, "
-        f"{s.path_applications} on the solution path",
-        f"; time: {s.seconds:.3f} s, proving {s.proving_seconds:.3f} s "
-        f"({100 * s.proving_share:.0f}%), {s.proof_attempts} proof attempts",
+        (
+            f"; operator applications: {s.applications} in the tree, "
+            f"{s.path_applications} on the solution path"
+        ),
+        (
+            f"; time: {s.seconds:.3f} s, proving {s.proving_seconds:.3f} s "
+            f"({100 * s.proving_share:.0f}%), {s.proof_attempts} proof attempts"
+        ),
         f"; expanded: {s.nodes}",
     ]
 

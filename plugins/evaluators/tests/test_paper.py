@@ -2,8 +2,8 @@ from __future__ import annotations
 
 import pytest
 
-from strips_framework.logic.formulas import And, Atomic, Not
 from strips_evaluators.paper import PaperEvaluator
+from strips_framework.logic.formulas import And, Atomic, Not
 
 
 def test_each_factor_counts_with_its_weight(make_node) -> None:

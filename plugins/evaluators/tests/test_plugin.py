@@ -5,8 +5,8 @@ import inspect
 import attrs
 import pluggy
 
-from strips_framework import hookspecs
 from strips_evaluators import plugin
+from strips_framework import hookspecs
 
 
 def test_hook_returns_every_evaluator_with_a_unique_name_and_docs() -> None:

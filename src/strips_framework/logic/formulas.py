@@ -8,7 +8,6 @@ Constants, parameters and function terms are the values of ``terms``.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Union
 
 from attrs import field, frozen
 
@@ -82,7 +81,7 @@ class Exists:
     body: Formula = field()
 
 
-Formula = Union[Atomic, Truth, Not, And, Or, Implies, Iff, Forall, Exists]
+Formula = Atomic | Truth | Not | And | Or | Implies | Iff | Forall | Exists
 
 
 def atoms_of(formula: Formula) -> Iterator[tuple]:

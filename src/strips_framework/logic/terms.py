@@ -15,7 +15,6 @@ equality. ``ONFLOOR`` is the atom ``("ONFLOOR",)``.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Union
 
 from attrs import frozen
 
@@ -41,7 +40,7 @@ class Param:
         return self.name
 
 
-Term = Union[int, str, Param, tuple]
+Term = int | str | Param | tuple
 Atom = tuple  # (predicate, *args)
 
 

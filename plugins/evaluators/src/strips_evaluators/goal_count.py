@@ -6,9 +6,9 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_framework.search.node import Node
 from strips_evaluators.features import subgoals, unproved_literals
 from strips_evaluators.options import weight
+from strips_framework.search.node import Node
 
 
 @frozen

@@ -6,8 +6,8 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_framework.search.node import Node
 from strips_evaluators.features import subgoals
+from strips_framework.search.node import Node
 
 
 @frozen

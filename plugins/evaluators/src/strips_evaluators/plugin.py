@@ -5,11 +5,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from strips_framework.hookspecs import hookimpl
 from strips_evaluators.breadth_first import BreadthFirst
 from strips_evaluators.goal_count import GoalCount
 from strips_evaluators.goal_list_bound import GoalListBound
 from strips_evaluators.paper import PaperEvaluator
+from strips_framework.hookspecs import hookimpl
 
 if TYPE_CHECKING:
     from strips_framework.search.components import NodeEvaluator
