@@ -9,7 +9,10 @@ Paramodulation replaces a subterm ``u`` of one clause by ``r`` when a positive l
 rewrites from a side that is smaller, in the weight part of a Knuth-Bendix ordering,
 than the other (``r`` weighs more and has every variable of ``l`` at least as often), never
 rewrites from or into a variable, and with the set-of-support it only runs between the
-given clause and processed clauses. Problems without ``=`` never reach this module.
+given clause and processed clauses. The ordering is not applied to equations of the
+axioms: axioms are never rewritten by each other, so an axiom's equation must be usable in
+both directions on set-of-support clauses (``f(a) = b, P(f(a)) |- P(b)`` needs ``b -> f(a)``
+on ``~P(b)``). Problems without ``=`` never reach this module.
 """
 
 from __future__ import annotations
@@ -21,7 +24,7 @@ from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Term
 from strips_framework.logic.unify import Substitution, unify
 
-from strips_resolution_prover.inference import build, merge_bindings
+from strips_resolution_prover.inference import Limits, build, merge_bindings
 from strips_resolution_prover.pclause import PClause, term_weight
 
 Path = tuple[int, ...]
@@ -79,12 +82,12 @@ def _smaller(left: Term, right: Term) -> bool:
     return all(available[v] >= n for v, n in needed.items())
 
 
-def _rewrite_sides(atom: tuple) -> Iterator[tuple[Term, Term]]:
+def _rewrite_sides(atom: tuple, ordered: bool) -> Iterator[tuple[Term, Term]]:
     """The ``(l, r)`` orientations of ``l = r`` that paramodulation may use."""
     left, right = atom[1], atom[2]
-    if type(left) is not int and not _smaller(left, right):
+    if type(left) is not int and not (ordered and _smaller(left, right)):
         yield left, right
-    if type(right) is not int and not _smaller(right, left):
+    if type(right) is not int and not (ordered and _smaller(right, left)):
         yield right, left
 
 
@@ -111,6 +114,7 @@ def _into(
     target: tuple[Literal, ...],
     base: Substitution,
     parents: tuple[int, ...],
+    limits: Limits,
 ) -> Iterator[PClause]:
     """Paramodulants of ``l = r`` (with side literals ``eq_literals``) into ``target``."""
     left, right = equation
@@ -122,13 +126,13 @@ def _into(
                     continue
                 rewritten = (positive, _replace(atom, path, right))
                 literals = eq_literals + target[:i] + (rewritten,) + target[i + 1 :]
-                clause = build(literals, subst, parents)
+                clause = build(literals, subst, parents, limits)
                 if clause is not None:
                     yield clause
 
 
 def paramodulants(
-    given: PClause, renamed: tuple[Literal, ...], partners: list[PClause]
+    given: PClause, renamed: tuple[Literal, ...], partners: list[PClause], limits: Limits
 ) -> Iterator[PClause]:
     """Paramodulants between the given clause (renamed apart) and each processed partner."""
     for partner in partners:
@@ -138,16 +142,17 @@ def paramodulants(
         if base is None:
             continue
         parents = (given.id, partner.id)
-        for source, target in ((renamed, partner.literals), (partner.literals, renamed)):
+        sides = ((renamed, partner.literals, True), (partner.literals, renamed, partner.sos))
+        for source, target, ordered in sides:
             for i, (positive, atom) in enumerate(source):
                 if not positive or not is_equality(atom):
                     continue
                 rest = source[:i] + source[i + 1 :]
-                for equation in _rewrite_sides(atom):
-                    yield from _into(equation, rest, target, base, parents)
+                for equation in _rewrite_sides(atom, ordered):
+                    yield from _into(equation, rest, target, base, parents, limits)
 
 
-def equality_resolvents(given: PClause) -> Iterator[PClause]:
+def equality_resolvents(given: PClause, limits: Limits) -> Iterator[PClause]:
     """From ``s != t | C`` with ``s``, ``t`` unifiable, derive ``C``·σ."""
     for i, (positive, atom) in enumerate(given.literals):
         if positive or not is_equality(atom):
@@ -155,6 +160,6 @@ def equality_resolvents(given: PClause) -> Iterator[PClause]:
         subst: Substitution = dict(given.bindings)
         if unify(atom[1], atom[2], subst) is None:
             continue
-        clause = build(given.literals[:i] + given.literals[i + 1 :], subst, (given.id,))
+        clause = build(given.literals[:i] + given.literals[i + 1 :], subst, (given.id,), limits)
         if clause is not None:
             yield clause

@@ -10,7 +10,7 @@ descendants" (paper, III.A).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Param, Term
@@ -50,10 +50,55 @@ def instantiate(term: Term, subst: Substitution, numbering: dict[int, int]) -> T
     return term
 
 
+class Limits:
+    """The weight bound on conclusions, and whether it ever discarded one.
+
+    Self-resolving clauses with Skolem functions can double a term's size with every step;
+    building such terms (and their occurs checks) is what makes a search hang. A conclusion
+    is weighed under the substitution before it is built, in time linear in the premises.
+    Once a clause was discarded, saturation no longer shows satisfiability.
+    """
+
+    __slots__ = ("max_weight", "discarded")
+
+    def __init__(self, max_weight: int | None) -> None:
+        self.max_weight = max_weight
+        self.discarded = False
+
+    def too_heavy(self, literals: Iterable[Literal], subst: Substitution) -> bool:
+        if self.max_weight is None:
+            return False
+        memo: dict[object, int] = {}
+        total = 0
+        for _, atom in literals:
+            total += _weight_under(atom, subst, memo)
+            if total > self.max_weight:
+                self.discarded = True
+                return True
+        return False
+
+
+def _weight_under(term: Term, subst: Substitution, memo: dict[object, int]) -> int:
+    """``term_weight(substitute(term, subst))`` without building the term."""
+    kind = type(term)
+    if kind is int or kind is Param:
+        if term in subst:
+            weight = memo.get(term)
+            if weight is None:
+                weight = memo[term] = _weight_under(subst[term], subst, memo)
+            return weight
+        return 1 if kind is int else 2
+    if kind is tuple:
+        return 2 + sum(_weight_under(arg, subst, memo) for arg in term[1:])
+    return 2
+
+
 def build(
-    literals: Iterable[Literal], subst: Substitution, parents: tuple[int, ...]
+    literals: Sequence[Literal], subst: Substitution, parents: tuple[int, ...], limits: Limits
 ) -> PClause | None:
-    """The conclusion ``literals``·``subst``, or ``None`` when it is a tautology."""
+    """The conclusion ``literals``·``subst``, or ``None`` for a tautology or too heavy."""
+    if limits.too_heavy(literals, subst):
+        return None
     numbering: dict[int, int] = {}
     out: list[Literal] = []
     seen: set[Literal] = set()
@@ -78,6 +123,7 @@ def resolvents(
     given: PClause,
     renamed: tuple[Literal, ...],
     partners: dict[tuple[bool, str, int], list[tuple[PClause, int]]],
+    limits: Limits,
 ) -> Iterator[PClause]:
     """Binary resolvents of the given clause (renamed apart) with indexed partners."""
     for i, (positive, atom) in enumerate(renamed):
@@ -97,12 +143,13 @@ def resolvents(
             if unify(atom, partner.literals[j][1], subst) is None:
                 continue
             others = partner.literals
-            clause = build(rest + others[:j] + others[j + 1 :], subst, (given.id, partner.id))
+            literals = rest + others[:j] + others[j + 1 :]
+            clause = build(literals, subst, (given.id, partner.id), limits)
             if clause is not None:
                 yield clause
 
 
-def factors(given: PClause) -> Iterator[PClause]:
+def factors(given: PClause, limits: Limits) -> Iterator[PClause]:
     """Factors of ``given``: two literals of the same sign and predicate unified into one."""
     literals = given.literals
     for i, (positive, atom) in enumerate(literals):
@@ -113,6 +160,6 @@ def factors(given: PClause) -> Iterator[PClause]:
             subst: Substitution = dict(given.bindings)
             if unify(atom, other, subst) is None:
                 continue
-            clause = build(literals[:j] + literals[j + 1 :], subst, (given.id,))
+            clause = build(literals[:j] + literals[j + 1 :], subst, (given.id,), limits)
             if clause is not None:
                 yield clause

@@ -42,6 +42,7 @@ class PClause:
         "bindings",
         "weight",
         "keyset",
+        "features",
         "sos",
         "parents",
         "label",
@@ -65,6 +66,7 @@ class PClause:
         self.bindings = bindings
         self.weight = sum(term_weight(atom) for _, atom in literals)
         self.keyset = frozenset((pos, atom[0], len(atom)) for pos, atom in literals)
+        self.features = features_of(literals)
         self.sos = sos
         self.parents = parents
         self.label = label
@@ -86,6 +88,38 @@ def term_weight(term: Term) -> int:
     if kind is tuple:
         return 2 + sum(term_weight(arg) for arg in term[1:])
     return 2
+
+
+def features_of(literals: tuple[Literal, ...]) -> frozenset[object]:
+    """Features that a clause's instances keep, for subsumption's subset pre-filter.
+
+    A substitution only adds structure, and (multiset) subsumption maps literals one-to-one,
+    so a subsumer's features are a subset of the subsumed clause's: the k-th literal with a
+    (polarity, predicate) key, the symbol at the top of each argument position of each key,
+    and every constant, functor and parameter in the clause.
+    """
+    found: set[object] = set()
+    counts: dict[tuple[bool, str, int], int] = {}
+    stack: list[Term] = []
+    for positive, atom in literals:
+        key = (positive, atom[0], len(atom))
+        counts[key] = count = counts.get(key, 0) + 1
+        found.add((key, count))
+        for position in range(1, len(atom)):
+            arg = atom[position]
+            kind = type(arg)
+            if kind is not int:
+                found.add((key, position, arg[0] if kind is tuple else arg))
+            stack.append(arg)
+    while stack:
+        term = stack.pop()
+        kind = type(term)
+        if kind is tuple:
+            found.add(term[0])
+            stack.extend(term[1:])
+        elif kind is not int:
+            found.add(term)
+    return frozenset(found)
 
 
 def term_depth(term: Term) -> int:
@@ -117,8 +151,11 @@ def offset(term: Term, by: int) -> Term:
     return term
 
 
-def from_clause(clause: Clause, *, sos: bool) -> PClause:
-    """Import a public clause: substitute its bindings, number its variables, drop repeats."""
+def from_clause(clause: Clause, *, sos: bool) -> PClause | None:
+    """Import a public clause: substitute its bindings, number its variables, drop repeats.
+
+    ``None`` for a tautology: the clause is true and takes no part in the search.
+    """
     bound = dict(clause.bindings)
     numbering: dict[int, int] = {}
     literals: list[Literal] = []
@@ -126,6 +163,8 @@ def from_clause(clause: Clause, *, sos: bool) -> PClause:
         if bound:
             atom = substitute(atom, bound)
         literal = (positive, renumber(atom, numbering))
+        if (not positive, literal[1]) in literals:
+            return None
         if literal not in literals:
             literals.append(literal)
     return PClause(

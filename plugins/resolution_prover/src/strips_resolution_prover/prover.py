@@ -24,7 +24,7 @@ from strips_resolution_prover.equality import (
     is_equality,
     paramodulants,
 )
-from strips_resolution_prover.inference import RENAME_OFFSET, factors, resolvents
+from strips_resolution_prover.inference import RENAME_OFFSET, Limits, factors, resolvents
 from strips_resolution_prover.pclause import PClause, from_clause, offset, renumber, term_depth
 from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
@@ -37,15 +37,17 @@ class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
     Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
-    serves unit clauses first; ``max_clause_literals`` and ``max_term_depth`` discard
-    larger conclusions (``None``: no limit; a limit makes the search incomplete, which is
-    fine for world models with finite depth and rarely fine for TPTP).
+    serves unit clauses first; ``max_weight`` (symbols, variables 1 and others 2),
+    ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
+    limit). A limit that discarded a clause turns saturation into GaveUp, since the search
+    was then incomplete.
     """
 
     name: ClassVar[str] = "resolution"
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
     unit_preference: bool = field(default=True, validator=instance_of(bool))
+    max_weight: int | None = field(default=120, validator=optional([instance_of(int), ge(1)]))
     max_clause_literals: int | None = field(
         default=None, validator=optional([instance_of(int), ge(1)])
     )
@@ -59,7 +61,12 @@ class ResolutionProver:
 
 
 class _Saturation:
-    """The state of one proof attempt."""
+    """The state of one proof attempt.
+
+    New clauses get the cheap checks (evaluation, duplicates, unit subsumption); the full
+    forward subsumption check runs when a clause is picked, as in DISCOUNT, since most
+    queued clauses are never picked.
+    """
 
     def __init__(self, options: ResolutionProver, task: ProofTask) -> None:
         self.options = options
@@ -70,7 +77,9 @@ class _Saturation:
         self.subsumption = SubsumptionIndex()
         self.processed: list[PClause] = []
         self.equational: list[PClause] = []
+        self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
         self.answers: list[Answer] = []
+        self.limits = Limits(options.max_weight)
         self.refutation: PClause | None = None
         self.uses_equality = any(
             is_equality(atom)
@@ -81,10 +90,14 @@ class _Saturation:
     # -- the loop -----------------------------------------------------------------------
 
     def run(self) -> ProofResult:
-        for clause in self.task.axioms:
-            self._add_axiom(from_clause(clause, sos=False))
-        for clause in self.task.negated_goal:
-            self._add_new(from_clause(clause, sos=True))
+        for axiom in self.task.axioms:
+            imported = from_clause(axiom, sos=False)
+            if imported is not None:
+                self._add_axiom(imported)
+        for goal in self.task.negated_goal:
+            imported = from_clause(goal, sos=True)
+            if imported is not None:
+                self._add_new(imported)
         effort = 0
         while not self._done() and effort < self.task.effort:
             given = self.queue.pop()
@@ -107,21 +120,21 @@ class _Saturation:
                 self.subsumption.note_deleted()
         self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
-        for clause in resolvents(given, renamed, self.index):
+        for clause in resolvents(given, renamed, self.index, self.limits):
             self._add_new(clause)
             if self._done():
                 return
-        for clause in factors(given):
+        for clause in factors(given, self.limits):
             self._add_new(clause)
         if self.uses_equality:
             self._equality_inferences(given, renamed)
 
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
-        for clause in equality_resolvents(given):
+        for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
         partners = self.processed if has_equation else self.equational
-        for clause in paramodulants(given, renamed, list(partners)):
+        for clause in paramodulants(given, renamed, list(partners), self.limits):
             self._add_new(clause)
             if self._done():
                 return
@@ -152,7 +165,7 @@ class _Saturation:
             return
         self._retain(simplified)
         # Factors of usable clauses are usable too: resolution is between factors.
-        for factor in factors(simplified):
+        for factor in factors(simplified, self.limits):
             self._add_axiom(PClause(factor.literals, factor.nvars, factor.bindings,
                                     sos=False, parents=factor.parents))
 
@@ -166,8 +179,10 @@ class _Saturation:
                 self._register(simplified)
                 self._record_refutation(simplified)
             return
-        if self.subsumption.is_subsumed(simplified):
+        signature = (simplified.literals, simplified.bindings)
+        if signature in self.seen or self.subsumption.is_subsumed_by_unit(simplified):
             return
+        self.seen.add(signature)
         self._register(simplified)
         self.queue.push(simplified)
 
@@ -184,10 +199,11 @@ class _Saturation:
                 clause = PClause(literals, len(numbering), clause.bindings, sos=clause.sos,
                                  parents=clause.parents, label=clause.label)
         limit = self.options.max_clause_literals
-        if limit is not None and len(literals) > limit:
-            return None
         depth = self.options.max_term_depth
-        if depth is not None and any(term_depth(atom) - 1 > depth for _, atom in literals):
+        if (limit is not None and len(literals) > limit) or (
+            depth is not None and any(term_depth(atom) - 1 > depth for _, atom in literals)
+        ):
+            self.limits.discarded = True
             return None
         return clause
 
@@ -209,7 +225,8 @@ class _Saturation:
         if self.answers:
             return ProofResult(PROVED, answers=tuple(self.answers), effort_used=effort,
                                proof=self._proof())
-        status = SATURATED if not len(self.queue) else GAVE_UP
+        saturated = not len(self.queue) and not self.limits.discarded
+        status = SATURATED if saturated else GAVE_UP
         uncompleted = tuple(c.to_clause() for c in self.clauses if c.sos and not c.dead)
         return ProofResult(status, uncompleted=uncompleted, effort_used=effort)
 

@@ -1,0 +1,204 @@
+"""Hand-written refutations: the prover's contract with the STRIPS search."""
+
+from __future__ import annotations
+
+import pytest
+from attrs.exceptions import FrozenInstanceError
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Param
+from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_resolution_prover import ResolutionProver
+
+M, N = Param("m"), Param("n")
+
+
+def pos(predicate: str, *args: object) -> tuple[bool, tuple]:
+    return True, (predicate, *args)
+
+
+def neg(predicate: str, *args: object) -> tuple[bool, tuple]:
+    return False, (predicate, *args)
+
+
+def clauses(*literal_lists: list) -> list[Clause]:
+    return [Clause(lits) for lits in literal_lists]
+
+
+def prove(axioms: list[Clause], goal: list[Clause], **task: object):
+    return ResolutionProver().prove(ProofTask(axioms, goal, **task))
+
+
+def test_propositional_refutation() -> None:
+    axioms = clauses([pos("P")], [neg("P"), pos("Q")])
+    result = prove(axioms, clauses([neg("Q")]))
+    assert result.status == PROVED
+    assert result.answers == ((),)
+    assert result.uncompleted == ()
+    assert result.proof[-1].is_empty
+    assert [str(c) for c in result.proof] == ["P", "~P | Q", "~Q", "~P", "false"]
+
+
+def test_first_order_chain_with_variables() -> None:
+    # on(x, y) & on(y, z) -> above(x, z), with variables 0..2.
+    axioms = clauses(
+        [pos("on", "a", "b")],
+        [pos("on", "b", "c")],
+        [neg("on", 0, 1), neg("on", 1, 2), pos("above", 0, 2)],
+    )
+    assert prove(axioms, clauses([neg("above", "a", "c")])).proved
+    assert not prove(axioms, clauses([neg("above", "a", "b")])).proved
+
+
+def test_parameter_answer_extraction() -> None:
+    result = prove(clauses([pos("ATR", "a")]), clauses([neg("ATR", M)]))
+    assert result.answers == (((M, "a"),),)
+
+
+def test_binding_holds_for_all_descendants() -> None:
+    # ~AT(ROBOT, m) | ~AT(BOX, m): one m for both literals.
+    axioms = clauses([pos("AT", "ROBOT", "r1")], [pos("AT", "BOX", "r2")], [pos("AT", "BOX", "r1")])
+    goal = clauses([neg("AT", "ROBOT", M), neg("AT", "BOX", M)])
+    assert prove(axioms, goal).answers == (((M, "r1"),),)
+    assert not prove(axioms[:2], goal).proved
+
+
+def test_parameter_shared_between_goal_clauses_binds_once() -> None:
+    # Goal P(m) & Q(m), negated as one clause; with two clauses ~P(m) | ~Q(m) must agree.
+    axioms = clauses([pos("P", "a")], [pos("Q", "b")])
+    assert not prove(axioms, clauses([neg("P", M), neg("Q", M)])).proved
+
+
+def test_parameter_is_not_bound_to_skolem_or_variable_terms() -> None:
+    assert not prove(clauses([pos("P", "sk!1")]), clauses([neg("P", M)])).proved
+    assert not prove(clauses([pos("P", ("sk!2", "a"))]), clauses([neg("P", M)])).proved
+    assert not prove(clauses([pos("P", ("f", 0))]), clauses([neg("P", M)])).proved
+    assert prove(clauses([pos("P", 0)]), clauses([neg("P", M)])).answers == ((),)
+    assert prove(clauses([pos("P", ("f", "a"))]), clauses([neg("P", M)])).answers == (
+        ((M, ("f", "a")),),
+    )
+
+
+def test_multiple_answers() -> None:
+    axioms = clauses([pos("ATR", "a")], [pos("ATR", "b")], [pos("ATR", "c")])
+    result = prove(axioms, clauses([neg("ATR", M)]), max_answers=2)
+    assert result.answers == (((M, "a"),), ((M, "b"),))
+    result = prove(axioms, clauses([neg("ATR", M)]), max_answers=10)
+    assert sorted(result.answers) == [((M, "a"),), ((M, "b"),), ((M, "c"),)]
+    assert result.status == PROVED
+
+
+def test_two_parameters_answer_sorted_by_name() -> None:
+    axioms = clauses([pos("R", "a", "b")])
+    result = prove(axioms, clauses([neg("R", N, M)]))
+    assert result.answers == (((M, "b"), (N, "a")),)
+
+
+def test_saturation_is_satisfiable_with_uncompleted_proof() -> None:
+    axioms = clauses([pos("P", "a")], [neg("P", 0), pos("Q", 0)])
+    result = prove(axioms, clauses([neg("R", M)], [neg("Q", "b")]))
+    assert result.status == SATURATED
+    assert result.answers == ()
+    texts = [str(c) for c in result.uncompleted]
+    assert texts == ["~R(m)", "~Q(b)", "~P(b)"]
+
+
+def test_effort_bound_gives_up_with_uncompleted_proof() -> None:
+    # N(s(x)) -> N(x): backward chaining from ~N(z) never ends.
+    result = prove(clauses([neg("N", ("s", 0)), pos("N", 0)]), clauses([neg("N", "z")]), effort=5)
+    assert result.status == GAVE_UP
+    assert result.effort_used == 5
+    assert result.uncompleted[:2] == tuple(clauses([neg("N", "z")], [neg("N", ("s", "z"))]))
+    assert len(result.uncompleted) > 1
+
+
+def test_tautologies_are_deleted() -> None:
+    result = prove([], clauses([neg("P", "a"), pos("P", "a")], [neg("Q")]))
+    assert result.status == SATURATED
+    assert [str(c) for c in result.uncompleted] == ["~Q"]
+
+
+def test_forward_and_backward_subsumption() -> None:
+    axioms = clauses([pos("P", "a")], [neg("P", 0), pos("Q", 0), pos("R", 0)])
+    goal = clauses([neg("Q", "a"), neg("S")], [neg("Q", "a")])
+    result = prove(axioms, goal)
+    texts = [str(c) for c in result.uncompleted]
+    # ~Q(a) subsumes ~Q(a) | ~S and every descendant of it.
+    assert "~Q(a) | ~S" not in texts
+    assert texts[0] == "~Q(a)"
+    assert result.status == SATURATED
+
+
+def test_factoring_is_needed() -> None:
+    # P(x) | P(y) and ~P(u) | ~P(v): refutable only with factoring.
+    result = prove(clauses([pos("P", 0), pos("P", 1)]), clauses([neg("P", 0), neg("P", 1)]))
+    assert result.proved
+
+
+def test_unique_names_evaluation() -> None:
+    # INROOM(ROBOT, r) with r != r1; the goal asks for a room different from r2.
+    axioms = clauses([pos("IN", "ROBOT", "r1")])
+    goal = clauses([neg("IN", "ROBOT", M), pos("=", M, "r2")])
+    assert prove(axioms, goal, unique_names=True).answers == (((M, "r1"),),)
+    assert not prove(axioms, goal).proved
+    # a != a is false, so a clause with it is kept without that literal.
+    assert prove(axioms, clauses([neg("=", "r1", "r1"), neg("IN", "ROBOT", "r1")])).proved
+    # Distinct names are distinct: the goal a = b is refuted at once, b = b is true.
+    assert prove([], clauses([neg("=", "a", "b")]), unique_names=True).status == SATURATED
+    assert prove([], clauses([pos("=", "a", "b")]), unique_names=True).proved
+
+
+def test_skolem_constants_are_not_unique_names() -> None:
+    result = prove([], clauses([pos("=", "sk!1", "b")]), unique_names=True)
+    assert result.status == SATURATED
+
+
+def test_equality_by_paramodulation() -> None:
+    # f(a) = b, P(f(a)) |- P(b); and symmetry: a = b |- b = a.
+    axioms = clauses([pos("=", ("f", "a"), "b")], [pos("P", ("f", "a"))])
+    assert prove(axioms, clauses([neg("P", "b")])).proved
+    assert prove(clauses([pos("=", "a", "b")]), clauses([neg("=", "b", "a")])).proved
+    # Transitivity through a parameter: the answer is found by rewriting.
+    axioms = clauses([pos("=", "c", "d")], [pos("Q", "d")])
+    assert prove(axioms, clauses([neg("Q", "c")])).proved
+
+
+def test_equality_resolution() -> None:
+    assert prove([], clauses([neg("=", ("f", 0), ("f", "a"))])).proved
+
+
+def test_deterministic_output() -> None:
+    axioms = clauses([pos("P", "a")], [pos("P", "b")], [neg("P", 0), pos("Q", 0, "c")])
+    goal = clauses([neg("Q", M, N)])
+    first = prove(axioms, goal, max_answers=5)
+    assert first == prove(axioms, goal, max_answers=5)
+    assert first.answers == (((M, "a"), (N, "c")), ((M, "b"), (N, "c")))
+
+
+def test_options_are_validated() -> None:
+    with pytest.raises((TypeError, ValueError)):
+        ResolutionProver(pick_given_ratio=0)
+    with pytest.raises(TypeError):
+        ResolutionProver(unit_preference="yes")  # type: ignore[arg-type]
+    with pytest.raises(FrozenInstanceError):
+        ResolutionProver().pick_given_ratio = 3  # type: ignore[misc]
+
+
+def test_size_limits_discard_large_clauses_and_void_saturation() -> None:
+    axioms = clauses([neg("N", ("s", 0)), pos("N", 0)])
+    goal = clauses([neg("N", "z")])
+    for prover in (ResolutionProver(max_term_depth=2), ResolutionProver(max_weight=8),
+                   ResolutionProver(max_clause_literals=1)):
+        result = prover.prove(ProofTask(axioms, goal, effort=100))
+        assert result.status == GAVE_UP
+        assert result.effort_used < 100
+    wide = clauses([neg("N", 0), pos("M", 0), pos("K", 0)])
+    result = ResolutionProver(max_clause_literals=1).prove(ProofTask(wide, goal, effort=100))
+    assert result.status == GAVE_UP
+
+
+def test_registered_as_plugin() -> None:
+    from strips_resolution_prover import plugin
+
+    assert plugin.strips_register_provers() == [ResolutionProver]
+    assert ResolutionProver.name == "resolution"
