@@ -20,7 +20,7 @@ PROBLEMS = {
     "dev/PUZ001-1": "Unsatisfiable",
     "dev/PUZ047+1": "Theorem",
     "dev/SET146+3": "Theorem",
-    "dev/KRS082+1": "Unsatisfiable",
+    "dev/MSC002-1": "Unsatisfiable",
     "dev-questions/SYN031-1.q": "Theorem",
 }
 EFFORT = 500

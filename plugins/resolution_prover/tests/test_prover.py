@@ -178,8 +178,8 @@ def test_deterministic_output() -> None:
 def test_options_are_validated() -> None:
     with pytest.raises((TypeError, ValueError)):
         ResolutionProver(pick_given_ratio=0)
-    with pytest.raises(TypeError):
-        ResolutionProver(unit_preference="yes")  # type: ignore[arg-type]
+    with pytest.raises(ValueError):
+        ResolutionProver(unit_preference=-1)
     with pytest.raises(FrozenInstanceError):
         ResolutionProver().pick_given_ratio = 3  # type: ignore[misc]
 

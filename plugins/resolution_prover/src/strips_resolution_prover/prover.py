@@ -37,7 +37,7 @@ class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
     Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
-    serves unit clauses first; ``max_weight`` (symbols, variables 1 and others 2),
+    is the weight-queue penalty per literal beyond the first (0: none); ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
     was then incomplete.
@@ -46,7 +46,7 @@ class ResolutionProver:
     name: ClassVar[str] = "resolution"
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
-    unit_preference: bool = field(default=True, validator=instance_of(bool))
+    unit_preference: int = field(default=4, validator=[instance_of(int), ge(0)])
     max_weight: int | None = field(default=120, validator=optional([instance_of(int), ge(1)]))
     max_clause_literals: int | None = field(
         default=None, validator=optional([instance_of(int), ge(1)])
