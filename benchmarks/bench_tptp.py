@@ -14,7 +14,7 @@ import pytest
 from strips_framework.formats.tptp import load_tptp, szs_status
 
 pytest.importorskip("strips_resolution_prover")
-from strips_resolution_prover import ResolutionProver  # noqa: E402
+from strips_resolution_prover import ResolutionProver
 
 PROBLEMS = {
     "dev/PUZ001-1": "Unsatisfiable",

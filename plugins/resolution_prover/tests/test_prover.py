@@ -187,8 +187,11 @@ def test_options_are_validated() -> None:
 def test_size_limits_discard_large_clauses_and_void_saturation() -> None:
     axioms = clauses([neg("N", ("s", 0)), pos("N", 0)])
     goal = clauses([neg("N", "z")])
-    for prover in (ResolutionProver(max_term_depth=2), ResolutionProver(max_weight=8),
-                   ResolutionProver(max_clause_literals=1)):
+    for prover in (
+        ResolutionProver(max_term_depth=2),
+        ResolutionProver(max_weight=8),
+        ResolutionProver(max_clause_literals=1),
+    ):
         result = prover.prove(ProofTask(axioms, goal, effort=100))
         assert result.status == GAVE_UP
         assert result.effort_used < 100

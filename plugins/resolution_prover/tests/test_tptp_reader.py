@@ -7,7 +7,16 @@ import pytest
 from strips_framework.errors import InputError
 from strips_framework.formats.tptp import parse_tptp, szs_report, szs_status
 from strips_framework.logic.formulas import (
-    And, Atomic, Exists, Forall, Iff, Implies, Not, Or, Truth, Var,
+    And,
+    Atomic,
+    Exists,
+    Forall,
+    Iff,
+    Implies,
+    Not,
+    Or,
+    Truth,
+    Var,
 )
 from strips_framework.logic.terms import Param
 from strips_framework.proving import ProofResult
@@ -39,8 +48,10 @@ def test_fof_connectives_and_quantifiers() -> None:
     problem = parse_tptp(text)
     assert problem.formulas[0].formula == Forall(
         (X,),
-        Exists((Y,), Implies(And((Atomic(("p", X)), Atomic(("q",)))),
-                             Iff(Atomic(("r", Y)), Truth(True)))),
+        Exists(
+            (Y,),
+            Implies(And((Atomic(("p", X)), Atomic(("q",)))), Iff(Atomic(("r", Y)), Truth(True))),
+        ),
     )
     a, b = Atomic(("a",)), Atomic(("b",))
     assert problem.formulas[1].formula == And(
@@ -76,7 +87,8 @@ def test_conjecture_is_negated_into_the_set_of_support() -> None:
     problem = parse_tptp(
         "fof(a, axiom, ! [X] : (man(X) => mortal(X))).\n"
         "fof(s, axiom, man(socrates)).\n"
-        "fof(c, conjecture, mortal(socrates)).\n", "syllogism.p"
+        "fof(c, conjecture, mortal(socrates)).\n",
+        "syllogism.p",
     )
     task = problem.task(effort=50)
     assert [str(c) for c in task.negated_goal] == ["~mortal(socrates)"]
@@ -99,7 +111,8 @@ def test_question_variables_become_parameters_and_answers() -> None:
     problem = parse_tptp(
         "cnf(a, axiom, parent(tom, bob)).\n"
         "cnf(b, axiom, parent(bob, ann)).\n"
-        "fof(q, question, ? [X, Y] : (parent(X, Y) & parent(Y, ann))).\n", "family.p"
+        "fof(q, question, ? [X, Y] : (parent(X, Y) & parent(Y, ann))).\n",
+        "family.p",
     )
     assert problem.question_variables == (Param("X"), Param("Y"))
     result = ResolutionProver().prove(problem.task(max_answers=3))

@@ -76,7 +76,9 @@ def _tokenize(text: str, path: str) -> list[_Token]:
     while pos < len(text):
         found = _TOKEN.match(text, pos)
         if found is None:
-            raise InputError(path, line, pos - line_start + 1, f"unexpected character {text[pos]!r}")
+            raise InputError(
+                path, line, pos - line_start + 1, f"unexpected character {text[pos]!r}"
+            )
         kind = found.lastgroup or ""
         if kind != "space":
             tokens.append(_Token(kind, found.group(), line, pos - line_start + 1))
@@ -121,7 +123,9 @@ class _Parser:
     def error(self, expected: str, token: _Token | None = None) -> InputError:
         token = token or self.peek()
         found = repr(token.text) if token.kind != "end" else "end of file"
-        return InputError(self.path, token.line, token.column, f"expected {expected}, found {found}")
+        return InputError(
+            self.path, token.line, token.column, f"expected {expected}, found {found}"
+        )
 
     def expect(self, text: str) -> _Token:
         token = self.peek()
@@ -140,8 +144,12 @@ class _Parser:
         while self.peek().kind != "end":
             token = self.next()
             if token.kind == "word" and token.text == "include":
-                raise InputError(self.path, token.line, token.column,
-                                 "include(...) is not supported: inline the included axioms")
+                raise InputError(
+                    self.path,
+                    token.line,
+                    token.column,
+                    "include(...) is not supported: inline the included axioms",
+                )
             if token.kind != "word" or token.text not in ("cnf", "fof"):
                 raise self.error("cnf(...) or fof(...)", token)
             formulas.append(self.annotated(token))
@@ -369,8 +377,9 @@ class TptpProblem:
                 params.extend(Param(v.name) for v in f.formula.variables)
         return tuple(params)
 
-    def task(self, effort: int = 1000, *, max_answers: int = 1,
-             unique_names: bool = False) -> ProofTask:
+    def task(
+        self, effort: int = 1000, *, max_answers: int = 1, unique_names: bool = False
+    ) -> ProofTask:
         """The proof task: negated goals are the set of support, the rest are axioms."""
         skolem = SkolemNames()
         axioms: list[Clause] = []
@@ -384,8 +393,9 @@ class TptpProblem:
             else:
                 clauses = clausify(f.formula, label=f.name, skolem=skolem)
                 (axioms if goals else support).extend(clauses)
-        return ProofTask(axioms, support, effort=effort, max_answers=max_answers,
-                         unique_names=unique_names)
+        return ProofTask(
+            axioms, support, effort=effort, max_answers=max_answers, unique_names=unique_names
+        )
 
 
 def _goal_body(f: TptpFormula) -> Formula:
@@ -417,14 +427,18 @@ def _vars_to_params(formula: Formula, params: dict[Var, Param]) -> Formula:
     if isinstance(formula, Or):
         return Or(_vars_to_params(p, params) for p in formula.parts)
     if isinstance(formula, Implies):
-        return Implies(_vars_to_params(formula.premise, params),
-                       _vars_to_params(formula.conclusion, params))
+        return Implies(
+            _vars_to_params(formula.premise, params), _vars_to_params(formula.conclusion, params)
+        )
     if isinstance(formula, Iff):
         return Iff(_vars_to_params(formula.left, params), _vars_to_params(formula.right, params))
     inner = {v: p for v, p in params.items() if v not in formula.variables}
     body = _vars_to_params(formula.body, inner)
-    return Forall(formula.variables, body) if isinstance(formula, Forall) else Exists(
-        formula.variables, body)
+    return (
+        Forall(formula.variables, body)
+        if isinstance(formula, Forall)
+        else Exists(formula.variables, body)
+    )
 
 
 def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:

@@ -23,7 +23,6 @@ from collections.abc import Iterator
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Term
 from strips_framework.logic.unify import Substitution, unify
-
 from strips_resolution_prover.inference import Limits, build, merge_bindings
 from strips_resolution_prover.pclause import PClause, term_weight
 

@@ -15,7 +15,6 @@ from collections.abc import Iterable, Iterator, Sequence
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Param, Term
 from strips_framework.logic.unify import Substitution, substitute, unify
-
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key
 
 #: Offset added to the given clause's variables; processed clauses number theirs from 0, and
@@ -59,7 +58,7 @@ class Limits:
     Once a clause was discarded, saturation no longer shows satisfiability.
     """
 
-    __slots__ = ("max_weight", "discarded")
+    __slots__ = ("discarded", "max_weight")
 
     def __init__(self, max_weight: int | None) -> None:
         self.max_weight = max_weight

@@ -20,7 +20,6 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from strips_framework.formats.tptp import load_tptp, szs_answers, szs_status
-
 from strips_resolution_prover.prover import ResolutionProver
 
 
@@ -44,8 +43,11 @@ def run_ours(path: Path, effort: int, seconds: float) -> tuple[str, float, str]:
         return "T/O", time.process_time() - start, ""
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0)
-    return (szs_status(problem, result), time.process_time() - start,
-            szs_answers(problem, result) or "")
+    return (
+        szs_status(problem, result),
+        time.process_time() - start,
+        szs_answers(problem, result) or "",
+    )
 
 
 def run_e(path: Path, seconds: float) -> tuple[str, float]:
@@ -53,7 +55,9 @@ def run_e(path: Path, seconds: float) -> tuple[str, float]:
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     completed = subprocess.run(
         ["eprover", "--auto", "-s", f"--cpu-limit={int(seconds)}", str(path)],
-        capture_output=True, text=True, check=False,
+        capture_output=True,
+        text=True,
+        check=False,
     )
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     used = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)

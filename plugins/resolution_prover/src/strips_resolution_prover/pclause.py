@@ -36,18 +36,18 @@ class PClause:
     """
 
     __slots__ = (
+        "bindings",
+        "dead",
+        "features",
         "id",
+        "keyset",
+        "label",
         "literals",
         "nvars",
-        "bindings",
-        "weight",
-        "keyset",
-        "features",
-        "sos",
         "parents",
-        "label",
-        "dead",
         "processed",
+        "sos",
+        "weight",
     )
 
     def __init__(
@@ -167,6 +167,4 @@ def from_clause(clause: Clause, *, sos: bool) -> PClause | None:
             return None
         if literal not in literals:
             literals.append(literal)
-    return PClause(
-        tuple(literals), len(numbering), clause.bindings, sos=sos, label=clause.label
-    )
+    return PClause(tuple(literals), len(numbering), clause.bindings, sos=sos, label=clause.label)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from strips_framework.hookspecs import hookimpl
 from strips_framework.proving import TheoremProver
-
 from strips_resolution_prover.prover import ResolutionProver
 
 

@@ -17,7 +17,6 @@ from attrs.validators import ge, instance_of, optional
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
-
 from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
@@ -51,9 +50,7 @@ class ResolutionProver:
     max_clause_literals: int | None = field(
         default=None, validator=optional([instance_of(int), ge(1)])
     )
-    max_term_depth: int | None = field(
-        default=None, validator=optional([instance_of(int), ge(0)])
-    )
+    max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
@@ -166,8 +163,15 @@ class _Saturation:
         self._retain(simplified)
         # Factors of usable clauses are usable too: resolution is between factors.
         for factor in factors(simplified, self.limits):
-            self._add_axiom(PClause(factor.literals, factor.nvars, factor.bindings,
-                                    sos=False, parents=factor.parents))
+            self._add_axiom(
+                PClause(
+                    factor.literals,
+                    factor.nvars,
+                    factor.bindings,
+                    sos=False,
+                    parents=factor.parents,
+                )
+            )
 
     def _add_new(self, clause: PClause) -> None:
         """Simplify a new set-of-support clause and queue it, or record a refutation."""
@@ -196,8 +200,14 @@ class _Saturation:
             if evaluated is not literals:
                 numbering: dict[int, int] = {}
                 literals = tuple((pos, renumber(atom, numbering)) for pos, atom in evaluated)
-                clause = PClause(literals, len(numbering), clause.bindings, sos=clause.sos,
-                                 parents=clause.parents, label=clause.label)
+                clause = PClause(
+                    literals,
+                    len(numbering),
+                    clause.bindings,
+                    sos=clause.sos,
+                    parents=clause.parents,
+                    label=clause.label,
+                )
         limit = self.options.max_clause_literals
         depth = self.options.max_term_depth
         if (limit is not None and len(literals) > limit) or (
@@ -223,8 +233,9 @@ class _Saturation:
 
     def _result(self, effort: int) -> ProofResult:
         if self.answers:
-            return ProofResult(PROVED, answers=tuple(self.answers), effort_used=effort,
-                               proof=self._proof())
+            return ProofResult(
+                PROVED, answers=tuple(self.answers), effort_used=effort, proof=self._proof()
+            )
         saturated = not len(self.queue) and not self.limits.discarded
         status = SATURATED if saturated else GAVE_UP
         uncompleted = tuple(c.to_clause() for c in self.clauses if c.sos and not c.dead)

@@ -15,7 +15,6 @@ from collections.abc import Iterator
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Term
-
 from strips_resolution_prover.pclause import PClause
 
 
@@ -49,7 +48,10 @@ def _match(pattern: Term, target: Term, subst: dict[int, Term]) -> bool:
 
 
 def _match_all(
-    pattern: tuple[Literal, ...], i: int, target: tuple[Literal, ...], used: list[bool],
+    pattern: tuple[Literal, ...],
+    i: int,
+    target: tuple[Literal, ...],
+    used: list[bool],
     subst: dict[int, Term],
 ) -> bool:
     if i == len(pattern):
