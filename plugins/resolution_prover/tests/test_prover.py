@@ -205,3 +205,20 @@ def test_registered_as_plugin() -> None:
 
     assert plugin.strips_register_provers() == [ResolutionProver]
     assert ResolutionProver.name == "resolution"
+
+
+def test_without_set_of_support_axioms_resolve_with_each_other() -> None:
+    # The answer needs the axiom-only inference P(a), P(x) -> Q(x) |- Q(a): a parameter may
+    # not be bound to the variable of Q(x), so only the derived fact Q(a) gives an answer.
+    axioms = clauses([pos("P", "a")], [neg("P", 0), pos("Q", ("f", 0))])
+    goal = clauses([neg("Q", M)])
+    assert not prove(axioms, goal).proved
+    result = ResolutionProver(set_of_support=False).prove(ProofTask(axioms, goal))
+    assert result.answers == (((M, ("f", "a")),),)
+    assert [str(c) for c in result.proof] == [
+        "P(a)",
+        "~P(x0) | Q(f(x0))",
+        "~Q(m)",
+        "Q(f(a))",
+        "false  [m=f(a)]",
+    ]

@@ -1,15 +1,18 @@
 """Measure the prover on a folder of TPTP problems, optionally beside E, as a Markdown table.
 
-    python -m strips_resolution_prover.measure DIR [DIR ...] [--effort N] [--time S] [--eprover]
+    python -m strips_resolution_prover.measure DIR [DIR ...] [--effort N] [--time S]
+        [--options JSON] [--eprover]
 
 Each problem gets ``--effort`` given clauses and at most ``--time`` CPU seconds (a
 profiling timer, so Unix only); E, when asked, runs with ``--auto`` and the same time limit in the same run,
-so the two columns come from one machine state.
+so the two columns come from one machine state. ``--options`` are the prover's options as
+a JSON object, e.g. ``'{"set_of_support": false}'``.
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import resource
 import shutil
 import signal
@@ -31,14 +34,16 @@ def _alarm(signum: int, frame: object) -> None:
     raise _OutOfTime
 
 
-def run_ours(path: Path, effort: int, seconds: float) -> tuple[str, float, str]:
+def run_ours(
+    prover: ResolutionProver, path: Path, effort: int, seconds: float
+) -> tuple[str, float, str]:
     """Status, CPU seconds and answers of our prover on one problem."""
     problem = load_tptp(path)
     start = time.process_time()
     signal.signal(signal.SIGPROF, _alarm)
     signal.setitimer(signal.ITIMER_PROF, seconds)
     try:
-        result = ResolutionProver().prove(problem.task(effort))
+        result = prover.prove(problem.task(effort))
     except _OutOfTime:
         return "T/O", time.process_time() - start, ""
     finally:
@@ -78,15 +83,17 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("folders", nargs="+", type=Path)
     parser.add_argument("--effort", type=int, default=20000)
     parser.add_argument("--time", type=float, default=10.0)
+    parser.add_argument("--options", type=json.loads, default={})
     parser.add_argument("--eprover", action="store_true")
     args = parser.parse_args(argv)
+    prover = ResolutionProver(**args.options)
     with_e = args.eprover and shutil.which("eprover") is not None
     header = "| problem | ours | s |" + (" E | s |" if with_e else "") + " answers |"
     print(header)
     print("|" + "---|" * (header.count("|") - 1))
     solved = e_solved = total = 0
     for path in _problems(args.folders):
-        status, seconds, answers = run_ours(path, args.effort, args.time)
+        status, seconds, answers = run_ours(prover, path, args.effort, args.time)
         total += 1
         solved += status not in ("T/O", "GaveUp")
         row = f"| {path.stem} | {status} | {seconds:.2f} |"

@@ -36,7 +36,9 @@ class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
     Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
-    is the weight-queue penalty per literal beyond the first (0: none); ``max_weight`` (symbols, variables 1 and others 2),
+    is the weight-queue penalty per literal beyond the first (0: none); ``set_of_support``
+    false lets axioms be resolved with each other too (goal descendants are still preferred),
+    which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
     was then incomplete.
@@ -46,6 +48,7 @@ class ResolutionProver:
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
     unit_preference: int = field(default=4, validator=[instance_of(int), ge(0)])
+    set_of_support: bool = field(default=True, validator=instance_of(bool))
     max_weight: int | None = field(default=120, validator=optional([instance_of(int), ge(1)]))
     max_clause_literals: int | None = field(
         default=None, validator=optional([instance_of(int), ge(1)])
@@ -89,8 +92,12 @@ class _Saturation:
     def run(self) -> ProofResult:
         for axiom in self.task.axioms:
             imported = from_clause(axiom, sos=False)
-            if imported is not None:
+            if imported is None:
+                continue
+            if self.options.set_of_support:
                 self._add_axiom(imported)
+            else:
+                self._add_new(imported)
         for goal in self.task.negated_goal:
             imported = from_clause(goal, sos=True)
             if imported is not None:
@@ -112,7 +119,7 @@ class _Saturation:
 
     def _process(self, given: PClause) -> None:
         for victim in self.subsumption.subsumed_by(given):
-            if victim.sos:
+            if victim.sos or not self.options.set_of_support:
                 victim.dead = True
                 self.subsumption.note_deleted()
         self._retain(given)
@@ -175,6 +182,8 @@ class _Saturation:
 
     def _add_new(self, clause: PClause) -> None:
         """Simplify a new set-of-support clause and queue it, or record a refutation."""
+        if clause.parents and not self.options.set_of_support:
+            clause.sos = any(self.clauses[parent].sos for parent in clause.parents)
         simplified = self._simplify(clause)
         if simplified is None:
             return

@@ -15,6 +15,10 @@ from collections import deque
 
 from strips_resolution_prover.pclause import PClause
 
+#: Without a set of support, clauses not descended from the negated goal wait longer in the
+#: weight queue (factor 2 beat 1 on the TPTP dev set).
+NON_GOAL_FACTOR = 2
+
 
 class ClauseQueue:
     """Unprocessed clauses; a clause leaves both queues when it is picked from one."""
@@ -32,6 +36,8 @@ class ClauseQueue:
 
     def push(self, clause: PClause) -> None:
         priority = clause.weight + self._unit_preference * (len(clause.literals) - 1)
+        if not clause.sos:
+            priority *= NON_GOAL_FACTOR
         heapq.heappush(self._by_weight, (priority, clause.id, clause))
         self._by_age.append(clause)
         self._size += 1
