@@ -127,3 +127,18 @@ def test_saturated_question_gives_up() -> None:
     assert result.status == "Satisfiable"
     assert szs_status(problem, result) == "GaveUp"
     assert szs_status(problem, ProofResult("GaveUp")) == "GaveUp"
+
+
+def test_several_conjectures_are_proved_together() -> None:
+    problem = parse_tptp("fof(a, axiom, p).\nfof(c1, conjecture, p).\nfof(c2, conjecture, q).")
+    result = ResolutionProver().prove(problem.task())
+    assert szs_status(problem, result) == "CounterSatisfiable"
+    both = parse_tptp("fof(a, axiom, p & q).\nfof(c1, conjecture, p).\nfof(c2, conjecture, q).")
+    assert szs_status(both, ResolutionProver().prove(both.task())) == "Theorem"
+
+
+def test_false_axiom_and_true_conjecture() -> None:
+    problem = parse_tptp("fof(a, axiom, $false).")
+    assert szs_status(problem, ResolutionProver().prove(problem.task())) == "Unsatisfiable"
+    problem = parse_tptp("fof(c, conjecture, $true).")
+    assert szs_status(problem, ResolutionProver().prove(problem.task())) == "Theorem"

@@ -380,7 +380,11 @@ class TptpProblem:
     def task(
         self, effort: int = 1000, *, max_answers: int = 1, unique_names: bool = False
     ) -> ProofTask:
-        """The proof task: negated goals are the set of support, the rest are axioms."""
+        """The proof task: negated goals are the set of support, the rest are axioms.
+
+        Several conjectures are proved together (TPTP: their conjunction is the goal), so
+        their conjunction is negated as one formula.
+        """
         skolem = SkolemNames()
         axioms: list[Clause] = []
         support: list[Clause] = []
@@ -388,11 +392,14 @@ class TptpProblem:
         for f in self.formulas:
             if f.role == "negated_conjecture":
                 support.extend(clausify(f.formula, label=f.name, skolem=skolem))
-            elif f.role in ("conjecture", "question"):
-                support.extend(clausify(Not(_goal_body(f)), label=f.name, skolem=skolem))
-            else:
+            elif f.role not in GOAL_ROLES:
                 clauses = clausify(f.formula, label=f.name, skolem=skolem)
                 (axioms if goals else support).extend(clauses)
+        conjectures = [f for f in goals if f.role != "negated_conjecture"]
+        if conjectures:
+            goal = And(_goal_body(f) for f in conjectures)
+            label = ",".join(f.name for f in conjectures)
+            support.extend(clausify(Not(goal), label=label, skolem=skolem))
         return ProofTask(
             axioms, support, effort=effort, max_answers=max_answers, unique_names=unique_names
         )
