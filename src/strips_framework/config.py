@@ -109,9 +109,12 @@ class Config:
         return _instantiate(registration.cls, choice.options, kind, self.source, registration)
 
 
+_NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
+          int: "an integer", float: "a float"}
+
+
 def _type_name(value: object) -> str:
-    return {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
-            int: "an integer", float: "a float"}.get(type(value), type(value).__name__)
+    return _NAMES.get(type(value), type(value).__name__)
 
 
 def _instantiate(
@@ -138,9 +141,24 @@ def _instantiate(
     try:
         return cls(**options)
     except (TypeError, ValueError) as error:
-        key = next((a.name for a in error.args if isinstance(a, attrs.Attribute)), None)
-        if key is None:
-            key = next((k for k in options if f"'{k}'" in str(error.args[0])), None)
-        where = f"'{path}.{key}'" if key else f"'{path}'"
-        value = f" (got {options[key]!r})" if key in options else ""
-        raise ConfigError(f"{source}: bad value for {where}: {error.args[0]}{value}") from None
+        raise ConfigError(f"{source}: bad value for {_explain(error, path, options)}") from None
+
+
+def _explain(error: TypeError | ValueError, path: str, options: dict[str, Any]) -> str:
+    """``'path.key': what was expected (got value)`` from an attrs validator's error.
+
+    attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``;
+    other validators raise with a message naming the attribute in quotes.
+    """
+    args = error.args
+    attribute = next((a for a in args if isinstance(a, attrs.Attribute)), None)
+    key = attribute.name if attribute else next(
+        (k for k in options if f"'{k}'" in str(args[0])), None
+    )
+    where = f"'{path}.{key}'" if key else f"'{path}'"
+    if attribute is not None and len(args) == 4:
+        expected = args[2] if isinstance(args[2], tuple) else (args[2],)
+        names = " or ".join(_type_name(t()) if t in _NAMES else t.__name__ for t in expected)
+        return f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
+    got = f" (got {options[key]!r})" if key in options else ""
+    return f"{where}: {args[0]}{got}"

@@ -23,7 +23,12 @@ class Planner:
 
     @classmethod
     def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
-        return cls(Registry.from_plugins(extra_plugins), config or Config.default())
+        """A planner whose config is checked at once: every name is registered and every
+        option valid, so mistakes show before any problem is read."""
+        planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
+        for kind in planner.config.choices:
+            planner.config.build(planner.registry, kind)
+        return planner
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
