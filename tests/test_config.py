@@ -6,6 +6,7 @@ import pytest
 
 from strips_framework.config import Config
 from strips_framework.errors import ConfigError
+from strips_framework.planner import Planner
 from strips_framework.plugins import Registry, get_plugin_manager
 from strips_framework.search.means_ends import MeansEndsSearch
 
@@ -65,3 +66,9 @@ def test_errors_name_the_file_and_key_path(tmp_path, registry, text, message):
     with pytest.raises(ConfigError, match=message) as error:
         Config.from_file(path).build(registry, "strategy")
     assert str(error.value).startswith(str(path))
+
+
+@pytest.mark.parametrize("path", sorted((Path(__file__).resolve().parents[1] / "examples" / "configs").glob("*.toml")), ids=lambda p: p.name)
+def test_example_configs_are_valid(path):
+    planner = Planner.create(Config.from_file(path))
+    assert planner.config.source == str(path)
