@@ -6,6 +6,9 @@ proving each precondition schema with answer extraction for its parameters (para
 that only the effects mention range over the problem's constants). Nodes are expanded in
 order of the evaluator's score and the goal is tested when a node is expanded, so with an
 admissible evaluator such as ``breadth-first`` the first plan found is a shortest one.
+The difference of each node (its failed proof of the goal) is still extracted, for the
+evaluators that use it; the relevance filter is not used, since forward search needs the
+applicable operators, not the relevant ones.
 """
 
 from __future__ import annotations
