@@ -86,3 +86,14 @@ def test_prove_reports_an_szs_status(tmp_path, capsys, status):
     problem.write_text("cnf(a, axiom, p(a)).\ncnf(b, negated_conjecture, ~p(X)).\n")
     assert main(["prove", str(problem)]) == 0
     assert f"SZS status {status}" in capsys.readouterr().out
+
+
+def test_validate_replays_a_plan_file_in_the_simulator(tmp_path, capsys):
+    plan = tmp_path / "plan.txt"
+    assert main(["solve", str(THREE_BOXES), "--plan-file", str(plan)]) == 0
+    capsys.readouterr()
+    assert main(["validate", str(THREE_BOXES), str(plan)]) == 0
+    assert capsys.readouterr().out.startswith("valid plan of 4 steps")
+    plan.write_text("(goto a c)\n(push BOX2 c b)\n")
+    assert main(["validate", str(THREE_BOXES), str(plan)]) == 1
+    assert "the goal fails in the final state" in capsys.readouterr().out

@@ -1,4 +1,4 @@
-"""The ``strips`` command: solve problems, prove TPTP problems, list plugins."""
+"""The ``strips`` command: solve problems, validate plans, prove TPTP problems, list plugins."""
 
 from __future__ import annotations
 
@@ -12,10 +12,11 @@ from pathlib import Path
 import attrs
 
 from strips_framework.config import Config
-from strips_framework.errors import StripsError
+from strips_framework.errors import InputError, StripsError
 from strips_framework.planner import Planner
 from strips_framework.plugins import KINDS
 from strips_framework.search.result import SearchResult
+from strips_framework.simulate import replay
 from strips_framework.tree_dot import search_tree_to_dot
 
 
@@ -39,6 +40,12 @@ def _parser() -> argparse.ArgumentParser:
     prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
     prove.add_argument("--effort", type=int, help="prover effort (default: [limits] effort)")
 
+    validate = commands.add_parser(
+        "validate", help="replay a plan in the independent simulator and check the goal"
+    )
+    validate.add_argument("problem", type=Path, help="problem file")
+    validate.add_argument("plan", type=Path, help="plan file: one step a line, ';' comments")
+
     commands.add_parser("plugins", help="list the registered implementations and options")
     return parser
 
@@ -53,6 +60,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _solve(planner, args)
         if args.command == "prove":
             return _prove(planner, args)
+        if args.command == "validate":
+            return _validate(planner, args)
         return _plugins(planner)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
@@ -110,6 +119,18 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
     result = planner.prover().prove(problem.task(effort=effort))
     print(szs_report(problem, result))
     return 0
+
+
+def _validate(planner: Planner, args: argparse.Namespace) -> int:
+    problem = planner.load(args.problem)
+    try:
+        lines = args.plan.read_text(encoding="utf-8").splitlines()
+    except OSError as error:
+        raise InputError(str(args.plan), 0, None, f"cannot read plan: {error.strerror}") from None
+    steps = [line.split(";")[0].strip() for line in lines]
+    outcome = replay(problem, [step for step in steps if step])
+    print(outcome.message)
+    return 0 if outcome.valid else 1
 
 
 def _plugins(planner: Planner) -> int:
