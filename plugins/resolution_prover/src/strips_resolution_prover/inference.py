@@ -64,17 +64,18 @@ class Limits:
         self.max_weight = max_weight
         self.discarded = False
 
-    def too_heavy(self, literals: Iterable[Literal], subst: Substitution) -> bool:
+    def weigh(self, literals: Iterable[Literal], subst: Substitution) -> int | None:
+        """The weight of ``literals``·``subst`` (``None``: over the limit, or no limit)."""
         if self.max_weight is None:
-            return False
+            return None
         memo: dict[object, int] = {}
         total = 0
         for _, atom in literals:
             total += _weight_under(atom, subst, memo)
             if total > self.max_weight:
                 self.discarded = True
-                return True
-        return False
+                return None
+        return total
 
 
 def _weight_under(term: Term, subst: Substitution, memo: dict[object, int]) -> int:
@@ -96,7 +97,8 @@ def build(
     literals: Sequence[Literal], subst: Substitution, parents: tuple[int, ...], limits: Limits
 ) -> PClause | None:
     """The conclusion ``literals``·``subst``, or ``None`` for a tautology or too heavy."""
-    if limits.too_heavy(literals, subst):
+    weight = limits.weigh(literals, subst)
+    if weight is None and limits.max_weight is not None:
         return None
     numbering: dict[int, int] = {}
     out: list[Literal] = []
@@ -104,6 +106,7 @@ def build(
     for positive, atom in literals:
         literal = (positive, instantiate(atom, subst, numbering))
         if literal in seen:
+            weight = None  # a repeated literal is dropped: weigh the clause as built
             continue
         if (not positive, literal[1]) in seen:
             return None
@@ -115,7 +118,18 @@ def build(
             key=binding_key,
         )
     )
-    return PClause(tuple(out), len(numbering), bindings, sos=True, parents=parents)
+    return PClause(
+        tuple(out), len(numbering), bindings, sos=True, parents=parents, weight=weight
+    )
+
+
+def _clash(atom: tuple, other: tuple) -> bool:
+    """Whether two atoms have different constants at the same argument position, which no
+    unifier can fix; most resolution partners fail this cheap test."""
+    for a, b in zip(atom, other):
+        if a != b and type(a) is str and type(b) is str:
+            return True
+    return False
 
 
 def resolvents(
@@ -131,7 +145,7 @@ def resolvents(
             continue
         rest = renamed[:i] + renamed[i + 1 :]
         for partner, j in entries:
-            if partner.dead:
+            if partner.dead or _clash(atom, partner.literals[j][1]):
                 continue
             if given.bindings or partner.bindings:
                 subst = merge_bindings(given.bindings, partner.bindings)

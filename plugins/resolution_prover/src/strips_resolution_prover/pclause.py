@@ -15,6 +15,8 @@ Invariants every ``PClause`` keeps:
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param, Term
 from strips_framework.logic.unify import substitute
@@ -37,8 +39,8 @@ class PClause:
 
     __slots__ = (
         "bindings",
+        "_features",
         "dead",
-        "features",
         "id",
         "keyset",
         "label",
@@ -59,19 +61,44 @@ class PClause:
         sos: bool,
         parents: tuple[int, ...] = (),
         label: str = "",
+        weight: int | None = None,
     ) -> None:
         self.id = -1
         self.literals = literals
         self.nvars = nvars
         self.bindings = bindings
-        self.weight = sum(term_weight(atom) for _, atom in literals)
+        self.weight = sum(term_weight(atom) for _, atom in literals) if weight is None else weight
         self.keyset = frozenset((pos, atom[0], len(atom)) for pos, atom in literals)
-        self.features = features_of(literals)
+        self._features: frozenset[object] | None = None
         self.sos = sos
         self.parents = parents
         self.label = label
         self.dead = False
         self.processed = False
+
+    @property
+    def features(self) -> frozenset[object]:
+        """Subsumption features, computed on first use: most queued clauses never need them."""
+        if self._features is None:
+            self._features = features_of(self.literals)
+        return self._features
+
+    def fresh_copy(self, *, sos: bool) -> PClause:
+        """A new, unregistered clause with this one's literals and derived data."""
+        copy = PClause.__new__(PClause)
+        copy.id = -1
+        copy.literals = self.literals
+        copy.nvars = self.nvars
+        copy.bindings = self.bindings
+        copy.weight = self.weight
+        copy.keyset = self.keyset
+        copy._features = self._features
+        copy.sos = sos
+        copy.parents = ()
+        copy.label = self.label
+        copy.dead = False
+        copy.processed = False
+        return copy
 
     def to_clause(self) -> Clause:
         return Clause(self.literals, self.bindings, label=self.label)
@@ -154,8 +181,16 @@ def offset(term: Term, by: int) -> Term:
 def from_clause(clause: Clause, *, sos: bool) -> PClause | None:
     """Import a public clause: substitute its bindings, number its variables, drop repeats.
 
-    ``None`` for a tautology: the clause is true and takes no part in the search.
+    ``None`` for a tautology: the clause is true and takes no part in the search. A planner
+    asks thousands of questions of world models that share most clauses, so imports are
+    cached by clause (``Clause`` is frozen and caches its hash).
     """
+    template = _import(clause)
+    return None if template is None else template.fresh_copy(sos=sos)
+
+
+@lru_cache(maxsize=1 << 14)
+def _import(clause: Clause) -> PClause | None:
     bound = dict(clause.bindings)
     numbering: dict[int, int] = {}
     literals: list[Literal] = []
@@ -167,4 +202,4 @@ def from_clause(clause: Clause, *, sos: bool) -> PClause | None:
             return None
         if literal not in literals:
             literals.append(literal)
-    return PClause(tuple(literals), len(numbering), clause.bindings, sos=sos, label=clause.label)
+    return PClause(tuple(literals), len(numbering), clause.bindings, sos=False, label=clause.label)

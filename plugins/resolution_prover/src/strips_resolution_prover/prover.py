@@ -119,9 +119,8 @@ class _Saturation:
 
     def _process(self, given: PClause) -> None:
         for victim in self.subsumption.subsumed_by(given):
-            if victim.sos or not self.options.set_of_support:
-                victim.dead = True
-                self.subsumption.note_deleted()
+            victim.dead = True
+            self.subsumption.note_deleted()
         self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
         for clause in resolvents(given, renamed, self.index, self.limits):
@@ -154,7 +153,7 @@ class _Saturation:
         self.processed.append(clause)
         if any(pos and is_equality(atom) for pos, atom in clause.literals):
             self.equational.append(clause)
-        self.subsumption.add(clause)
+        self.subsumption.add(clause, deletable=clause.sos or not self.options.set_of_support)
         for i, (positive, atom) in enumerate(clause.literals):
             self.index.setdefault((positive, atom[0], len(atom)), []).append((clause, i))
 

@@ -90,35 +90,67 @@ def _unit_key(positive: bool, atom: tuple) -> tuple[object, ...]:
     return positive, atom[0], len(atom), top
 
 
-class SubsumptionIndex:
-    """Retained clauses, filed under the key of their first literal.
+def _is_ground(term: Term) -> bool:
+    """Whether ``term`` has no variables (parameters match only themselves, like constants)."""
+    kind = type(term)
+    if kind is int:
+        return False
+    if kind is tuple:
+        return all(_is_ground(arg) for arg in term[1:])
+    return True
 
-    A subsumer's keys are a subset of the subsumed clause's keys, so forward subsumption of
-    ``d`` only looks at the clauses filed under one of ``d``'s keys: each candidate once.
-    Backward subsumption of ``c`` looks at the clauses containing ``c``'s rarest key. Unit
-    clauses are also kept apart, for the cheap check every new clause gets.
+
+class SubsumptionIndex:
+    """Retained clauses, indexed for the three subsumption checks.
+
+    - Ground units are kept in a hash table by literal: a ground unit subsumes exactly the
+      clauses containing its literal, so the check is one lookup per literal. World models
+      are mostly ground facts, so this is where STRIPS's checks end.
+    - Other units are filed by :func:`_unit_key`.
+    - Longer clauses are filed under the key of their first literal and their first
+      parameter binding (``None`` if they made none): a subsumer's keys and bindings are
+      subsets of the subsumed clause's, so forward subsumption of ``d`` only looks at the
+      clauses filed under one of ``d``'s keys and one of its bindings, each candidate once.
+      When a planner asks for all answers, the set of support holds many clauses that
+      differ only in their bindings; this keeps them from being candidates for each other.
+    - Backward subsumption of ``c`` looks at the *deletable* clauses containing ``c``'s
+      rarest key or binding; with a set of support, usable clauses are never deleted, so
+      they are not filed there at all.
     """
 
     def __init__(self) -> None:
-        self._by_first_key: dict[tuple[bool, str, int], list[PClause]] = {}
-        self._by_key: dict[tuple[bool, str, int], list[PClause]] = {}
+        self._ground_units: dict[Literal, list[PClause]] = {}
         self._units: dict[tuple[object, ...], list[PClause]] = {}
+        self._by_first_key: dict[tuple[object, ...], list[PClause]] = {}
+        self._by_key: dict[object, list[PClause]] = {}
         self._dead = 0
 
-    def add(self, clause: PClause) -> None:
+    def add(self, clause: PClause, *, deletable: bool) -> None:
         if not clause.literals:
             return
-        positive, atom = clause.literals[0]
-        first_key = (positive, atom[0], len(atom))
-        self._by_first_key.setdefault(first_key, []).append(clause)
+        positive, atom = literal = clause.literals[0]
         if len(clause.literals) == 1:
-            self._units.setdefault(_unit_key(positive, atom), []).append(clause)
-        for key in clause.keyset:
-            self._by_key.setdefault(key, []).append(clause)
+            if _is_ground(atom):
+                self._ground_units.setdefault(literal, []).append(clause)
+            else:
+                self._units.setdefault(_unit_key(positive, atom), []).append(clause)
+        else:
+            binding = clause.bindings[0] if clause.bindings else None
+            first_key = (positive, atom[0], len(atom), binding)
+            self._by_first_key.setdefault(first_key, []).append(clause)
+        if deletable:
+            for key in (*clause.keyset, *clause.bindings):
+                self._by_key.setdefault(key, []).append(clause)
 
     def is_subsumed_by_unit(self, d: PClause) -> bool:
         """Whether a unit clause matches a literal of ``d``."""
         bindings = set(d.bindings)
+        for literal in d.literals:
+            for unit in self._ground_units.get(literal, ()):
+                if not unit.dead and (not unit.bindings or set(unit.bindings) <= bindings):
+                    return True
+        if not self._units:
+            return False
         for positive, atom in d.literals:
             key = _unit_key(positive, atom)
             for unit_key in (key, key[:3] + (None,)) if key[3] is not None else (key,):
@@ -132,17 +164,24 @@ class SubsumptionIndex:
         return False
 
     def is_subsumed(self, d: PClause) -> bool:
+        if self.is_subsumed_by_unit(d):
+            return True
+        if len(d.literals) < 2:
+            return False
+        bindings = (None, *d.bindings)
         for key in d.keyset:
-            for c in self._by_first_key.get(key, ()):
-                if not c.dead and subsumes(c, d):
-                    return True
+            for binding in bindings:
+                for c in self._by_first_key.get((*key, binding), ()):
+                    if not c.dead and subsumes(c, d):
+                        return True
         return False
 
     def subsumed_by(self, c: PClause) -> Iterator[PClause]:
-        """Live clauses other than ``c`` that ``c`` subsumes, in the order they were added."""
+        """Live deletable clauses other than ``c`` that ``c`` subsumes, in the order they
+        were added."""
         if not c.literals:
             return
-        lists = [self._by_key.get(key, []) for key in c.keyset]
+        lists = [self._by_key.get(key, []) for key in (*c.keyset, *c.bindings)]
         candidates = min(lists, key=len)
         for d in candidates:
             if d is not c and not d.dead and subsumes(c, d):
@@ -153,6 +192,6 @@ class SubsumptionIndex:
         self._dead += 1
         if self._dead > 256:
             self._dead = 0
-            for table in (self._by_first_key, self._by_key, self._units):
+            for table in (self._ground_units, self._units, self._by_first_key, self._by_key):
                 for key, clauses in table.items():
                     table[key] = [c for c in clauses if not c.dead]
