@@ -97,3 +97,17 @@ def test_validate_replays_a_plan_file_in_the_simulator(tmp_path, capsys):
     plan.write_text("(goto a c)\n(push BOX2 c b)\n")
     assert main(["validate", str(THREE_BOXES), str(plan)]) == 1
     assert "the goal fails in the final state" in capsys.readouterr().out
+
+
+def test_bench_runs_every_combination_and_checks_plans(tmp_path, capsys):
+    problem = Path(__file__).resolve().parent / "data" / "push-one-box.strips"
+    out = tmp_path / "runs.csv"
+    args = ["bench", str(problem), "--strategies", "means-ends,astar",
+            "--evaluators", "breadth-first,goal-count", "--csv", str(out)]
+    assert main(args) == 0
+    table = capsys.readouterr().out.splitlines()
+    assert table[0].startswith("| problem | strategy | evaluator | prover | status |")
+    assert len(table) == 2 + 4
+    rows = out.read_text().splitlines()
+    assert len(rows) == 1 + 4
+    assert all(",solved,2,True," in row for row in rows[1:])

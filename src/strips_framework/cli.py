@@ -1,4 +1,4 @@
-"""The ``strips`` command: solve problems, validate plans, prove TPTP problems, list plugins."""
+"""The ``strips`` command: solve, validate plans, benchmark, prove TPTP problems, list plugins."""
 
 from __future__ import annotations
 
@@ -11,6 +11,7 @@ from pathlib import Path
 
 import attrs
 
+from strips_framework.bench import markdown_table, run_matrix, write_csv
 from strips_framework.config import Config
 from strips_framework.errors import InputError, StripsError
 from strips_framework.planner import Planner
@@ -46,6 +47,17 @@ def _parser() -> argparse.ArgumentParser:
     validate.add_argument("problem", type=Path, help="problem file")
     validate.add_argument("plan", type=Path, help="plan file: one step a line, ';' comments")
 
+    bench = commands.add_parser(
+        "bench", help="solve problems with every strategy x evaluator x prover; print a table"
+    )
+    bench.add_argument("problems", type=Path, nargs="+", help="problem files")
+    bench.add_argument("--config", type=Path, help="base config (limits, options)")
+    bench.add_argument("--strategies", help="comma-separated names (default: the config's)")
+    bench.add_argument("--evaluators", help="comma-separated names (default: the config's)")
+    bench.add_argument("--provers", help="comma-separated names (default: the config's)")
+    bench.add_argument("--all", action="store_true", help="every registered name of each kind")
+    bench.add_argument("--csv", type=Path, help="also write the runs as CSV")
+
     commands.add_parser("plugins", help="list the registered implementations and options")
     return parser
 
@@ -62,6 +74,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _prove(planner, args)
         if args.command == "validate":
             return _validate(planner, args)
+        if args.command == "bench":
+            return _bench(planner, args)
         return _plugins(planner)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
@@ -131,6 +145,28 @@ def _validate(planner: Planner, args: argparse.Namespace) -> int:
     outcome = replay(problem, [step for step in steps if step])
     print(outcome.message)
     return 0 if outcome.valid else 1
+
+
+def _bench(planner: Planner, args: argparse.Namespace) -> int:
+    def names(kind: str, given: str | None) -> list[str]:
+        if given:
+            return [name.strip() for name in given.split(",") if name.strip()]
+        if args.all:
+            return planner.registry.names(kind)
+        return [planner.config.choices[kind].name]
+
+    runs = run_matrix(
+        planner.config,
+        args.problems,
+        names("strategy", args.strategies),
+        names("evaluator", args.evaluators),
+        names("prover", args.provers),
+    )
+    print(markdown_table(runs))
+    if args.csv:
+        with args.csv.open("w", newline="", encoding="utf-8") as out:
+            write_csv(runs, out)
+    return 0
 
 
 def _plugins(planner: Planner) -> int:
