@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from attrs import field, frozen
 
-from strips_framework.logic.formulas import Formula
+from strips_framework.logic.formulas import Formula, params_in
 from strips_framework.logic.terms import Atom, Param
 
 #: In a delete-list atom, ``$`` matches any term: ``FACING($)`` deletes every FACING atom.
@@ -40,6 +40,12 @@ class OperatorSchema:
     add_list: tuple[Atom, ...] = field(converter=tuple)
     delete_list: tuple[Atom, ...] = field(converter=tuple)
     source: SourceSpan | None = field(default=None, eq=False)
+    #: The parameters the precondition mentions: those a precondition proof can bind.
+    #: Computed once, since relevance asks for every candidate instance.
+    precondition_params: frozenset[Param] = field(init=False, eq=False, repr=False)
+
+    def __attrs_post_init__(self) -> None:
+        object.__setattr__(self, "precondition_params", frozenset(params_in(self.precondition)))
 
     def signature(self) -> str:
         return f"{self.name}({', '.join(p.name for p in self.parameters)})"

@@ -24,7 +24,7 @@ from attrs import frozen
 
 from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.formulas import And, Atomic, params_in
+from strips_framework.logic.formulas import And, Atomic
 from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.operators import OperatorInstance
@@ -109,9 +109,8 @@ def _resolve(
         if params_of(value) or variables_of(value):
             return None  # bound to another operator's parameter, or to a variable
         binding[own] = value
-    in_precondition = params_in(schema.precondition)
     for own in schema.parameters:
-        if own not in binding and own not in in_precondition:
+        if own not in binding and own not in schema.precondition_params:
             return None
     rest = [
         (sign, substitute(atom, unifier))
@@ -141,15 +140,15 @@ def _rigid_predicates(
 def _never_applicable(
     instance: OperatorInstance, rigid: set[tuple[str, int]], model: WorldModel
 ) -> bool:
-    precondition = instance.precondition()
+    precondition = instance.schema.precondition
     conjuncts = precondition.parts if isinstance(precondition, And) else (precondition,)
-    return any(
-        isinstance(part, Atomic)
-        and (part.atom[0], len(part.atom) - 1) in rigid
-        and is_ground(part.atom)
-        and not model.holds(part.atom)
-        for part in conjuncts
-    )
+    binding = instance.binding_map()
+    for part in conjuncts:
+        if isinstance(part, Atomic) and (part.atom[0], len(part.atom) - 1) in rigid:
+            atom = substitute(part.atom, binding)
+            if is_ground(atom) and not model.holds(atom):
+                return True
+    return False
 
 
 def _protected_facts(difference: Difference, model: WorldModel) -> list[Atom]:
