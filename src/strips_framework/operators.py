@@ -67,7 +67,7 @@ class OperatorInstance:
             raise ValueError(f"cannot apply {self}: parameters are unbound")
         delete_patterns, adds = self.effects()
         deleted = frozenset(
-            fact for fact in model.facts() if any(_matches(p, fact) for p in delete_patterns)
+            fact for fact in model.facts() if any(may_delete(p, fact) for p in delete_patterns)
         )
         return model.changed(deleted, frozenset(adds))
 
@@ -80,15 +80,16 @@ class OperatorInstance:
         return "(" + " ".join([self.schema.name, *map(term_to_str, self.arguments())]) + ")"
 
 
-def _matches(pattern: Term, term: Term) -> bool:
-    """Whether a ground delete-list ``pattern`` with wildcards matches ``term``."""
-    if pattern == WILDCARD:
+def may_delete(pattern: Term, term: Term) -> bool:
+    """Whether the delete-list ``pattern`` matches ``term``: ``$`` and parameters not yet
+    bound match anything (in a ground instance only ``$`` is left)."""
+    if pattern == WILDCARD or type(pattern) is Param:
         return True
     if type(pattern) is tuple:
         return (
             type(term) is tuple
             and len(pattern) == len(term)
             and pattern[0] == term[0]
-            and all(_matches(p, t) for p, t in zip(pattern[1:], term[1:]))
+            and all(may_delete(p, t) for p, t in zip(pattern[1:], term[1:]))
         )
     return pattern == term

@@ -27,8 +27,8 @@ from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic
 from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import substitute, unify
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import WILDCARD, OperatorSchema
+from strips_framework.operators import OperatorInstance, may_delete
+from strips_framework.problem import OperatorSchema
 from strips_framework.search.node import Difference, RelevantInstance
 from strips_framework.world import WorldModel
 
@@ -171,20 +171,7 @@ def _deleted_count(instance: OperatorInstance, facts: list[Atom]) -> int:
     """How many of ``facts`` the instance's delete list may delete (unbound parameters and
     wildcards match anything)."""
     patterns, _ = instance.effects()
-    return sum(1 for fact in facts if any(_may_match(p, fact) for p in patterns))
-
-
-def _may_match(pattern: Term, term: Term) -> bool:
-    if pattern == WILDCARD or type(pattern) is Param:
-        return True
-    if type(pattern) is tuple:
-        return (
-            type(term) is tuple
-            and len(pattern) == len(term)
-            and pattern[0] == term[0]
-            and all(_may_match(p, t) for p, t in zip(pattern[1:], term[1:]))
-        )
-    return pattern == term
+    return sum(1 for fact in facts if any(may_delete(p, fact) for p in patterns))
 
 
 @hookimpl
