@@ -222,3 +222,16 @@ def test_without_set_of_support_axioms_resolve_with_each_other() -> None:
         "Q(f(a))",
         "false  [m=f(a)]",
     ]
+
+
+def test_literal_selection_saturates_without_usable_clauses() -> None:
+    # With every clause in the queue, ~P(x) | P(f(x)) resolved with itself would breed
+    # P(f(f(x))), P(f(f(f(x)))), ... forever; resolving only on its selected negative
+    # literal, which needs a positive partner, the search saturates.
+    goal = clauses([neg("P", 0), pos("P", ("f", 0))], [neg("Q")])
+    result = prove([], goal, effort=50)
+    assert result.status == SATURATED
+    refutable = clauses(
+        [neg("P", 0), pos("P", ("f", 0))], [pos("P", "a")], [neg("P", ("f", ("f", "a")))]
+    )
+    assert prove([], refutable).proved

@@ -15,7 +15,7 @@ from collections.abc import Iterable, Iterator, Sequence
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Param, Term
 from strips_framework.logic.unify import Substitution, substitute, unify
-from strips_resolution_prover.pclause import Bindings, PClause, binding_key
+from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
 #: Offset added to the given clause's variables; processed clauses number theirs from 0, and
 #: no clause has this many variables, so one renaming of the given clause serves every partner.
@@ -118,9 +118,7 @@ def build(
             key=binding_key,
         )
     )
-    return PClause(
-        tuple(out), len(numbering), bindings, sos=True, parents=parents, weight=weight
-    )
+    return PClause(tuple(out), len(numbering), bindings, sos=True, parents=parents, weight=weight)
 
 
 def _clash(atom: tuple, other: tuple) -> bool:
@@ -132,14 +130,36 @@ def _clash(atom: tuple, other: tuple) -> bool:
     return False
 
 
+def eligible(literals: tuple[Literal, ...], selecting: bool) -> tuple[int, ...]:
+    """The positions of the literals that may be resolved upon.
+
+    Without literal selection, all of them. With it (resolution without a set of support,
+    as in PyRes and E), a clause with negative literals resolves only on one of them, the
+    heaviest (first on ties); a clause without any resolves on all of its literals. So two
+    clauses only resolve when one of them is positive, which keeps saturation of
+    satisfiable problems finite far more often and remains refutationally complete.
+    """
+    if selecting:
+        best = -1
+        for i, (positive, atom) in enumerate(literals):
+            if not positive and (best < 0 or term_weight(atom) > term_weight(literals[best][1])):
+                best = i
+        if best >= 0:
+            return (best,)
+    return tuple(range(len(literals)))
+
+
 def resolvents(
     given: PClause,
     renamed: tuple[Literal, ...],
+    selected: tuple[int, ...],
     partners: dict[tuple[bool, str, int], list[tuple[PClause, int]]],
     limits: Limits,
 ) -> Iterator[PClause]:
-    """Binary resolvents of the given clause (renamed apart) with indexed partners."""
-    for i, (positive, atom) in enumerate(renamed):
+    """Binary resolvents of the given clause (renamed apart) on its ``selected`` literals
+    with indexed partners (which hold only their own eligible literals)."""
+    for i in selected:
+        positive, atom = renamed[i]
         entries = partners.get((not positive, atom[0], len(atom)))
         if not entries:
             continue
@@ -162,9 +182,15 @@ def resolvents(
                 yield clause
 
 
-def factors(given: PClause, limits: Limits) -> Iterator[PClause]:
-    """Factors of ``given``: two literals of the same sign and predicate unified into one."""
+def factors(given: PClause, limits: Limits, selecting: bool = False) -> Iterator[PClause]:
+    """Factors of ``given``: two literals of the same sign and predicate unified into one.
+
+    With literal selection only clauses without negative literals are factored: a clause
+    resolves on its one selected literal, so merging others gains nothing.
+    """
     literals = given.literals
+    if selecting and any(not positive for positive, _ in literals):
+        return
     for i, (positive, atom) in enumerate(literals):
         for j in range(i + 1, len(literals)):
             other_positive, other = literals[j]

@@ -38,8 +38,8 @@ class PClause:
     """
 
     __slots__ = (
-        "bindings",
         "_features",
+        "bindings",
         "dead",
         "id",
         "keyset",

@@ -23,7 +23,13 @@ from strips_resolution_prover.equality import (
     is_equality,
     paramodulants,
 )
-from strips_resolution_prover.inference import RENAME_OFFSET, Limits, factors, resolvents
+from strips_resolution_prover.inference import (
+    RENAME_OFFSET,
+    Limits,
+    eligible,
+    factors,
+    resolvents,
+)
 from strips_resolution_prover.pclause import PClause, from_clause, offset, renumber, term_depth
 from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
@@ -81,6 +87,9 @@ class _Saturation:
         self.answers: list[Answer] = []
         self.limits = Limits(options.max_weight)
         self.refutation: PClause | None = None
+        # Literal selection needs every clause to be resolved with every other: it is
+        # incomplete with a set of support, whose usable clauses never meet each other.
+        self.selecting = not options.set_of_support or not task.axioms
         self.uses_equality = any(
             is_equality(atom)
             for clause in (*task.axioms, *task.negated_goal)
@@ -123,11 +132,12 @@ class _Saturation:
             self.subsumption.note_deleted()
         self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
-        for clause in resolvents(given, renamed, self.index, self.limits):
+        selected = eligible(given.literals, self.selecting)
+        for clause in resolvents(given, renamed, selected, self.index, self.limits):
             self._add_new(clause)
             if self._done():
                 return
-        for clause in factors(given, self.limits):
+        for clause in factors(given, self.limits, self.selecting):
             self._add_new(clause)
         if self.uses_equality:
             self._equality_inferences(given, renamed)
@@ -154,7 +164,8 @@ class _Saturation:
         if any(pos and is_equality(atom) for pos, atom in clause.literals):
             self.equational.append(clause)
         self.subsumption.add(clause, deletable=clause.sos or not self.options.set_of_support)
-        for i, (positive, atom) in enumerate(clause.literals):
+        for i in eligible(clause.literals, self.selecting):
+            positive, atom = clause.literals[i]
             self.index.setdefault((positive, atom[0], len(atom)), []).append((clause, i))
 
     def _add_axiom(self, clause: PClause) -> None:
