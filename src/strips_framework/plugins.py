@@ -48,6 +48,7 @@ KNOWN_PROVIDERS = {
     ("evaluator", "paper"): "strips-evaluators",
     ("evaluator", "breadth-first"): "strips-evaluators",
     ("evaluator", "goal-count"): "strips-evaluators",
+    ("evaluator", "astar-goals"): "strips-evaluators",
 }
 
 AUTOLOAD_SWITCH = "STRIPS_DISABLE_PLUGIN_AUTOLOAD"
