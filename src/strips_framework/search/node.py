@@ -78,3 +78,12 @@ class Node:
     def cost(self) -> int:
         """Operator applications so far (every operator costs 1)."""
         return len(self.plan)
+
+
+def path_to(node: Node | None) -> list[Node]:
+    """The nodes from the root down to ``node`` (empty for ``None``)."""
+    path = []
+    while node is not None:
+        path.append(node)
+        node = node.parent
+    return path[::-1]

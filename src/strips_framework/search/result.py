@@ -5,7 +5,7 @@ from __future__ import annotations
 from attrs import frozen
 
 from strips_framework.operators import OperatorInstance
-from strips_framework.search.node import Node
+from strips_framework.search.node import Node, path_to
 
 SOLVED = "solved"
 EXHAUSTED = "exhausted"  # every node was expanded: no plan within this strategy's reach
@@ -64,8 +64,4 @@ class SearchResult:
 
     def solution_path(self) -> list[Node]:
         """The nodes from the root to the goal node (empty when unsolved)."""
-        path, node = [], self.solution
-        while node is not None:
-            path.append(node)
-            node = node.parent
-        return path[::-1]
+        return path_to(self.solution)

@@ -9,7 +9,7 @@ from attrs import define, field
 from strips_framework.operators import OperatorInstance
 from strips_framework.search.goal_prover import GoalProver
 from strips_framework.search.limits import Limits
-from strips_framework.search.node import Goal, Node
+from strips_framework.search.node import Goal, Node, path_to
 from strips_framework.search.result import NODE_LIMIT, TIME_LIMIT, SearchResult, Statistics
 from strips_framework.world import WorldModel
 
@@ -49,11 +49,7 @@ class SearchTree:
         return node
 
     def result(self, status: str, solution: Node | None) -> SearchResult:
-        path: list[Node] = []
-        node = solution
-        while node is not None:
-            path.append(node)
-            node = node.parent
+        path = path_to(solution)
         statistics = Statistics(
             nodes=len(self.nodes),
             applications=sum(1 for n in self.nodes if n.applied is not None),
