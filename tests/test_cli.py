@@ -111,3 +111,12 @@ def test_bench_runs_every_combination_and_checks_plans(tmp_path, capsys):
     rows = out.read_text().splitlines()
     assert len(rows) == 1 + 4
     assert all(",solved,2,True," in row for row in rows[1:])
+
+
+def test_bench_keeps_the_options_of_the_configs_own_choices(tmp_path, capsys):
+    problem = Path(__file__).resolve().parent / "data" / "push-one-box.strips"
+    config = tmp_path / "strips.toml"
+    config.write_text('[strategy]\nname = "means-ends"\nmax_goals = 1\n')
+    assert main(["bench", str(problem), "--config", str(config)]) == 0
+    row = capsys.readouterr().out.splitlines()[2]
+    assert "| means-ends | paper | resolution | exhausted |" in row  # no room for subgoals

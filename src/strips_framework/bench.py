@@ -55,9 +55,9 @@ def run_matrix(
     runs = []
     for strategy, evaluator, prover in itertools.product(strategies, evaluators, provers):
         choices = {kind: {"name": c.name, **c.options} for kind, c in base.choices.items()}
-        choices["strategy"] = {"name": strategy}
-        choices["evaluator"] = {"name": evaluator}
-        choices["prover"] = {"name": prover}
+        for kind, name in (("strategy", strategy), ("evaluator", evaluator), ("prover", prover)):
+            if name != base.choices[kind].name:  # the base's options belong to its choice
+                choices[kind] = {"name": name}
         limits = {"time": base.limits.time, "nodes": base.limits.nodes, "effort": base.limits.effort}
         planner = Planner.create(Config.from_dict({**choices, "limits": limits}, base.source))
         for path in problems:
