@@ -50,9 +50,12 @@ class PaperEvaluator:
 
     Defaults give the depth-leaning search of the paper: applying an operator pops a goal
     and so lowers the score, a fresh subgoal (about 1 + 0.5 per predicate, 3 for a typical
-    precondition) scores below its parent once the parent has paid 5 for its first child,
-    and cost only breaks near-ties. Not admissible: the weights are not in units of
-    operators.
+    precondition) scores below its parent once the parent has paid 6 for its first child,
+    and cost only breaks near-ties. An unproved literal weighs 4, more than a goal with its
+    predicates, so a node whose proof is nearly complete is preferred to one that merely has
+    a short goal list. These weights were chosen on the robot world: they keep the paper's
+    plans and node counts on its three tasks and cut the five-part goal from 2029 nodes
+    (with 2 and 5) to 329. Not admissible: the weights are not in units of operators.
     """
 
     name: ClassVar[str] = "paper"
@@ -61,9 +64,9 @@ class PaperEvaluator:
     goal_weight: float = weight(1.0)
     predicate_weight: float = weight(0.5)
     predicate_weights: Mapping[str, float] = weight_table()
-    difference_weight: float = weight(2.0)
+    difference_weight: float = weight(4.0)
     cost_weight: float = weight(0.5)
-    successor_weight: float = weight(5.0)
+    successor_weight: float = weight(6.0)
     pending_weight: float = weight(1.0)
 
     def evaluate(self, node: Node) -> float:
