@@ -140,7 +140,7 @@ def _validate(planner: Planner, args: argparse.Namespace) -> int:
     try:
         lines = args.plan.read_text(encoding="utf-8").splitlines()
     except OSError as error:
-        raise InputError(str(args.plan), 0, None, f"cannot read plan: {error.strerror}") from None
+        raise InputError(str(args.plan), None, None, f"cannot read plan: {error.strerror}") from None
     steps = [line.split(";")[0].strip() for line in lines]
     outcome = replay(problem, [step for step in steps if step])
     print(outcome.message)

@@ -8,11 +8,14 @@ class StripsError(Exception):
 
 
 class InputError(StripsError):
-    """Bad input: names the file, line and column, and what was expected there."""
+    """Bad input: names the file, line and column, and what was expected there.
 
-    def __init__(self, path: str, line: int, column: int | None, message: str) -> None:
+    ``line`` is ``None`` for a problem with the file as a whole (missing, unreadable).
+    """
+
+    def __init__(self, path: str, line: int | None, column: int | None, message: str) -> None:
         self.path, self.line, self.column, self.message = path, line, column, message
-        where = f"{path}:{line}" + (f":{column}" if column else "")
+        where = path + (f":{line}" if line else "") + (f":{column}" if line and column else "")
         super().__init__(f"{where}: {message}")
 
 

@@ -33,7 +33,7 @@ class Planner:
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
         if not path.is_file():
-            raise InputError(str(path), 0, None, "no such problem file")
+            raise InputError(str(path), None, None, "no such problem file")
         loader = self.registry.loader_for(path.suffix).cls()
         return loader.load(path)
 
