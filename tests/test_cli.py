@@ -120,3 +120,9 @@ def test_bench_keeps_the_options_of_the_configs_own_choices(tmp_path, capsys):
     assert main(["bench", str(problem), "--config", str(config)]) == 0
     row = capsys.readouterr().out.splitlines()[2]
     assert "| means-ends | paper | resolution | exhausted |" in row  # no room for subgoals
+
+
+def test_prove_names_a_missing_file(tmp_path, capsys):
+    assert main(["prove", str(tmp_path / "none.p")]) == 2
+    err = capsys.readouterr().err
+    assert err == f"strips: error: {tmp_path / 'none.p'}: cannot read: No such file or directory\n"

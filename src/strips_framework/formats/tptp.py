@@ -454,7 +454,14 @@ def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:
 
 
 def load_tptp(path: str | Path) -> TptpProblem:
-    return parse_tptp(Path(path).read_text(encoding="utf-8"), str(path))
+    """Read and parse a TPTP file; a missing or unreadable file is an :class:`InputError`."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except OSError as error:
+        raise InputError(str(path), None, None, f"cannot read: {error.strerror}") from None
+    except UnicodeDecodeError as error:
+        raise InputError(str(path), None, None, f"not UTF-8 text: {error.reason}") from None
+    return parse_tptp(text, str(path))
 
 
 def szs_status(problem: TptpProblem, result: ProofResult) -> str:
