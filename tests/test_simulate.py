@@ -339,8 +339,8 @@ def test_negation_and_universal_goals_use_the_closed_world() -> None:
 def test_equality_follows_unique_names_or_is_refused() -> None:
     goto = OperatorSchema("goto", [m, n], conj(atom("ATR", m), Not(atom("=", m, n))),
                           [("ATR", n)], [("ATR", m)])
-    kwargs = dict(facts=[("ATR", "a")], operators=[goto], goal=atom("ATR", "b"),
-                  constants=["a", "b"])
+    kwargs = {"facts": [("ATR", "a")], "operators": [goto], "goal": atom("ATR", "b"),
+                  "constants": ["a", "b"]}
     assert replay(problem(**kwargs), ["goto(a,b)"]).valid
     stay = replay(problem(**kwargs), ["goto(a,a)", "goto(a,b)"])
     assert stay.step == 0 and "precondition a != a does not hold" in stay.message
