@@ -9,8 +9,6 @@ import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
-import attrs
-
 from strips_framework.bench import markdown_table, run_matrix, write_csv
 from strips_framework.config import Config
 from strips_framework.errors import InputError, StripsError
@@ -178,9 +176,6 @@ def _plugins(planner: Planner) -> int:
             doc = (registration.cls.__doc__ or "").strip().splitlines()
             if doc:
                 print(f"      {doc[0]}")
-            for option in registration.options():
-                default = option.default
-                if isinstance(default, attrs.Factory):  # type: ignore[arg-type]
-                    default = default.factory()
-                print(f"      {option.name} = {default!r}")
+            for name, default in registration.options():
+                print(f"      {name} = {default!r}")
     return 0

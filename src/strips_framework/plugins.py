@@ -82,11 +82,23 @@ class Registration:
     plugin: str
     distribution: str | None
 
-    def options(self) -> list[attrs.Attribute]:
-        """The class's options: its attrs fields that callers may set."""
+    def options(self) -> list[tuple[str, object]]:
+        """The class's options (its attrs init fields) with their default values."""
         if not attrs.has(self.cls):
             return []
-        return [a for a in attrs.fields(self.cls) if a.init]
+        options = []
+        for field in attrs.fields(self.cls):
+            if field.init:
+                default = field.default
+                if isinstance(default, attrs.Factory):  # type: ignore[arg-type]
+                    default = default.factory()
+                options.append((field.name, default))
+        return options
+
+    @property
+    def suffixes(self) -> tuple[str, ...]:
+        """The file suffixes a problem loader reads (empty for other kinds)."""
+        return tuple(getattr(self.cls, "suffixes", ()))
 
 
 class Registry:
@@ -144,9 +156,9 @@ class Registry:
     def loader_for(self, suffix: str) -> Registration:
         """The problem loader for files ending in ``suffix``."""
         for registration in self.registrations("loader"):
-            if suffix in registration.cls.suffixes:
+            if suffix in registration.suffixes:
                 return registration
-        known = sorted(s for r in self.registrations("loader") for s in r.cls.suffixes)
+        known = sorted(s for r in self.registrations("loader") for s in r.suffixes)
         raise PluginError(
             f"no problem loader reads '{suffix}' files (known suffixes: {', '.join(known)})"
         )
