@@ -6,7 +6,7 @@ from collections.abc import Iterable
 
 from attrs import field, frozen
 
-from strips_framework.logic.formulas import Formula, substitute_params
+from strips_framework.logic.formulas import Formula, substitute_free
 from strips_framework.logic.terms import Atom, Param, Term, is_ground, term_to_str
 from strips_framework.logic.unify import substitute
 from strips_framework.problem import WILDCARD, OperatorSchema
@@ -45,7 +45,7 @@ class OperatorInstance:
         return all(is_ground(arg) for arg in self.arguments())
 
     def precondition(self) -> Formula:
-        return substitute_params(self.schema.precondition, self.binding_map())
+        return substitute_free(self.schema.precondition, self.binding_map())
 
     def bind(self, more: dict[Param, Term]) -> OperatorInstance:
         """This instance with ``more`` bindings added (earlier bindings win)."""

@@ -50,7 +50,8 @@ from strips_framework.logic.formulas import (
     Truth,
     Var,
     formula_to_str,
-    substitute_params,
+    substitute_free,
+    term_variables,
 )
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term
 from strips_framework.problem import WILDCARD, OperatorSchema, Problem
@@ -124,7 +125,7 @@ class _Simulator:
             closed = self.close(state)
             for conjunct in _conjuncts(schema.precondition):
                 if not self.holds(conjunct, binding, closed):
-                    failed = formula_to_str(substitute_params(conjunct, binding))
+                    failed = formula_to_str(substitute_free(conjunct, binding))
                     return Replay(
                         False, index, f"{where}, {shown}: precondition {failed} does not hold"
                     )
@@ -340,8 +341,8 @@ def _horn_rule(number: int, axiom: Formula) -> _Rule:
             f"'forall x, ...: A1 & ... & An -> B1 & ... & Bm' over atoms, and this one has "
             f"{found.args[0]}"
         ) from None
-    bound = {t for atom in body for t in _variables(atom)}
-    free = dict.fromkeys(v for atom in head for v in _variables(atom) if v not in bound)
+    bound = {t for atom in body for t in term_variables(atom)}
+    free = dict.fromkeys(v for atom in head for v in term_variables(atom) if v not in bound)
     return _Rule(body, head, tuple(free))
 
 
@@ -361,11 +362,3 @@ def _atoms(formula: Formula) -> Iterator[Atom]:
                  Forall: "a nested quantifier", Implies: "a nested implication",
                  Iff: "an equivalence", Truth: "'false'"}
         raise ValueError(kinds[type(formula)] + f" ({formula_to_str(formula)})")
-
-
-def _variables(term: Term | Var) -> Iterator[Var]:
-    if isinstance(term, Var):
-        yield term
-    elif type(term) is tuple:
-        for arg in term[1:]:
-            yield from _variables(arg)

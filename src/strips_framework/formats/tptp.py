@@ -36,6 +36,7 @@ from strips_framework.logic.formulas import (
     Or,
     Truth,
     Var,
+    substitute_free,
 )
 from strips_framework.logic.terms import EQUALITY, Param, Term
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
@@ -410,42 +411,7 @@ def _goal_body(f: TptpFormula) -> Formula:
     if f.role != "question" or not isinstance(f.formula, Exists):
         return _close(f.formula)
     params = {v: Param(v.name) for v in f.formula.variables}
-    return _close(_vars_to_params(f.formula.body, params))
-
-
-def _vars_to_params(formula: Formula, params: dict[Var, Param]) -> Formula:
-    """Replace the free occurrences of the question's variables by parameters."""
-
-    def term(t: Term | Var) -> Term | Var:
-        if isinstance(t, Var):
-            return params.get(t, t)
-        if type(t) is tuple:
-            return (t[0], *map(term, t[1:]))
-        return t
-
-    if isinstance(formula, Atomic):
-        return Atomic((formula.atom[0], *map(term, formula.atom[1:])))
-    if isinstance(formula, Truth):
-        return formula
-    if isinstance(formula, Not):
-        return Not(_vars_to_params(formula.body, params))
-    if isinstance(formula, And):
-        return And(_vars_to_params(p, params) for p in formula.parts)
-    if isinstance(formula, Or):
-        return Or(_vars_to_params(p, params) for p in formula.parts)
-    if isinstance(formula, Implies):
-        return Implies(
-            _vars_to_params(formula.premise, params), _vars_to_params(formula.conclusion, params)
-        )
-    if isinstance(formula, Iff):
-        return Iff(_vars_to_params(formula.left, params), _vars_to_params(formula.right, params))
-    inner = {v: p for v, p in params.items() if v not in formula.variables}
-    body = _vars_to_params(formula.body, inner)
-    return (
-        Forall(formula.variables, body)
-        if isinstance(formula, Forall)
-        else Exists(formula.variables, body)
-    )
+    return _close(substitute_free(f.formula.body, params))
 
 
 def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:

@@ -45,6 +45,7 @@ from strips_framework.logic.formulas import (
     Or,
     Truth,
     Var,
+    term_variables,
 )
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Param, Term, subterms
 
@@ -209,7 +210,7 @@ def _free_vars(f: Formula, bound: set[Var]) -> Iterator[Var]:
     """The Vars of ``f`` that no quantifier inside ``f`` binds (``bound`` excluded)."""
     if isinstance(f, Atomic):
         for arg in f.atom[1:]:
-            yield from (v for v in _term_vars(arg) if v not in bound)
+            yield from (v for v in term_variables(arg) if v not in bound)
     elif isinstance(f, Not):
         yield from _free_vars(f.body, bound)
     elif isinstance(f, (And, Or)):
@@ -223,14 +224,6 @@ def _free_vars(f: Formula, bound: set[Var]) -> Iterator[Var]:
         yield from _free_vars(f.right, bound)
     elif isinstance(f, (Forall, Exists)):
         yield from _free_vars(f.body, bound | set(f.variables))
-
-
-def _term_vars(t: Term | Var) -> Iterator[Var]:
-    if isinstance(t, Var):
-        yield t
-    elif type(t) is tuple:
-        for arg in t[1:]:
-            yield from _term_vars(arg)
 
 
 def _variables(t: Term) -> Iterator[int]:

@@ -7,7 +7,7 @@ Constants, parameters and function terms are the values of ``terms``.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 
 from attrs import field, frozen
 
@@ -120,11 +120,24 @@ def params_in(formula: Formula) -> set[Param]:
     return {p for atom in atoms_of(formula) for arg in atom[1:] for p in _term_params(arg)}
 
 
-def substitute_params(formula: Formula, binding: dict[Param, Term]) -> Formula:
-    """Replace parameters by terms everywhere in ``formula`` (an instance of a wff schema)."""
+def term_variables(term: Term | Var) -> Iterator[Var]:
+    """Yield the named variables inside a formula-level term, left to right."""
+    if isinstance(term, Var):
+        yield term
+    elif type(term) is tuple:
+        for arg in term[1:]:
+            yield from term_variables(arg)
+
+
+def substitute_free(formula: Formula, binding: Mapping[Var | Param, Term | Var]) -> Formula:
+    """Replace parameters, and variables where they occur free, by terms.
+
+    With parameters this makes an instance of a wff schema; with variables (which a
+    quantifier inside ``formula`` shadows) it turns a question's variables into parameters.
+    """
 
     def term(t: Term | Var) -> Term | Var:
-        if isinstance(t, Param):
+        if isinstance(t, (Param, Var)):
             return binding.get(t, t)
         if type(t) is tuple:
             return (t[0], *map(term, t[1:]))
@@ -145,9 +158,9 @@ def substitute_params(formula: Formula, binding: dict[Param, Term]) -> Formula:
             return Implies(walk(f.premise), walk(f.conclusion))
         if isinstance(f, Iff):
             return Iff(walk(f.left), walk(f.right))
-        if isinstance(f, Forall):
-            return Forall(f.variables, walk(f.body))
-        return Exists(f.variables, walk(f.body))
+        inner = {k: v for k, v in binding.items() if k not in f.variables}
+        body = substitute_free(f.body, inner)
+        return Forall(f.variables, body) if isinstance(f, Forall) else Exists(f.variables, body)
 
     return walk(formula) if binding else formula
 
