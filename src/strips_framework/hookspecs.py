@@ -24,6 +24,7 @@ if TYPE_CHECKING:
         NodeEvaluator,
         RelevanceFilter,
         SearchStrategy,
+        StateHeuristic,
     )
 
 PROJECT = "strips_framework"
@@ -82,6 +83,19 @@ def strips_register_strategies() -> list[type[SearchStrategy]]:
     difference extractor, relevance filter and evaluator it is given, within the limits of
     the config; it returns a :class:`~strips_framework.search.result.SearchResult` with the
     plan (if any), the search tree and the paper's Table 2 statistics.
+    """
+
+
+@hookspec
+def strips_register_heuristics() -> list[type[StateHeuristic]]:
+    """Return state-heuristic classes.
+
+    A state heuristic estimates, for a state of a ground task (see
+    :mod:`strips_framework.grounding.task`), the cost still needed to reach the goal;
+    forward strategies (A*, greedy best-first, hill-climbing) use it. ``for_task`` is
+    called once per task and does the precomputation; the estimator it returns is called
+    for every state. A heuristic that never overestimates sets ``admissible = True``; one
+    that also proposes *preferred operators* implements ``estimate_with_preferred``.
     """
 
 

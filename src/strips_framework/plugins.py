@@ -38,6 +38,7 @@ KINDS = {
     ),
     "relevance": ("strips_register_relevance_filters", "relevance filter", "relevance filters"),
     "evaluator": ("strips_register_evaluators", "evaluator", "evaluators"),
+    "heuristic": ("strips_register_heuristics", "state heuristic", "state heuristics"),
     "loader": ("strips_register_loaders", "problem loader", "problem loaders"),
 }
 

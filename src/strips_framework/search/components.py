@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, ClassVar, Protocol
 
 if TYPE_CHECKING:
+    from strips_framework.grounding.task import GroundTask
     from strips_framework.logic.clauses import Clause
     from strips_framework.problem import OperatorSchema, Problem
     from strips_framework.proving import ProofResult, TheoremProver
@@ -60,4 +61,27 @@ class SearchStrategy(Protocol):
         limits: Limits,
     ) -> SearchResult:
         """Search for a plan for ``problem``."""
+        ...
+
+
+class StateEstimator(Protocol):
+    """A heuristic bound to one ground task; called for every state the search meets."""
+
+    def estimate(self, state: int) -> float:
+        """The estimated cost from ``state`` to the goal; ``math.inf`` for a dead end."""
+        ...
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, Sequence[int]]:
+        """The estimate and the preferred operators (indices into ``task.operators``,
+        applicable in ``state``); heuristics without them return an empty sequence."""
+        ...
+
+
+class StateHeuristic(Protocol):
+    name: ClassVar[str]
+    #: True when the estimate never exceeds the cost of an optimal plan from the state.
+    admissible: ClassVar[bool]
+
+    def for_task(self, task: GroundTask) -> StateEstimator:
+        """Precompute what the heuristic needs for ``task``."""
         ...
