@@ -1,0 +1,58 @@
+"""Loading a domain and problem from files, and finding a problem's domain file."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from strips_framework.errors import InputError
+from strips_framework.pddl.reader import read_domain, read_problem
+from strips_framework.pddl.sexpr import Source
+from strips_framework.pddl.task import PddlTask
+
+
+def _source(path: Path) -> Source:
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+    except OSError as error:
+        raise InputError(str(path), None, None, f"cannot read the file: {error.strerror}") from None
+    return Source(text, str(path))
+
+
+def load_task(domain_path: Path, problem_path: Path) -> PddlTask:
+    """Read and check a domain and a problem file; errors are :class:`InputError`."""
+    domain = read_domain(_source(domain_path))
+    problem = read_problem(_source(problem_path), domain)
+    return PddlTask(domain, problem, str(domain_path), str(problem_path))
+
+
+def domain_candidates(problem_path: Path) -> list[Path]:
+    """Where the domain of ``problem_path`` may be, most specific first: the naming rules of
+    Fast Downward (``domain.pddl``, ``p01-domain.pddl``, ``domain_p01.pddl``, ...) and of the
+    IPC suites that number their domains like their tasks (``domain01.pddl``)."""
+    name = problem_path.name
+    names = []
+    numbers = re.findall(r"\d+", name)
+    if numbers:
+        names.append(f"domain{numbers[0]}.pddl")
+    names += [
+        f"{problem_path.stem}-domain.pddl",
+        f"{name[:3]}-domain.pddl",
+        f"domain_{name}",
+        f"domain-{name}",
+        "domain.pddl",
+    ]
+    return [problem_path.parent / candidate for candidate in dict.fromkeys(names)]
+
+
+def find_domain(problem_path: Path) -> Path:
+    """The domain file beside ``problem_path``, or an :class:`InputError` listing the names
+    that were tried."""
+    candidates = domain_candidates(problem_path)
+    for candidate in candidates:
+        if candidate.is_file() and candidate != problem_path:
+            return candidate
+    tried = ", ".join(candidate.name for candidate in candidates)
+    raise InputError(
+        str(problem_path), None, None, f"no domain file found beside it (tried {tried})"
+    )

@@ -1,0 +1,117 @@
+"""The lifted PDDL task: a domain and a problem as read, plus the object-type table every
+later step (grounding, validation, translation to a framework problem) needs."""
+
+from __future__ import annotations
+
+from attrs import field, frozen
+
+from strips_framework.pddl.formulas import Atom, Formula, Parameter
+
+#: An action's cost: a number, or a numeric function term whose value the problem's init gives.
+Cost = int | Atom
+
+
+@frozen
+class Predicate:
+    name: str
+    params: tuple[Parameter, ...]
+
+
+@frozen
+class Action:
+    """A lifted action: STRIPS add/delete effects plus an optional ``total-cost`` increase."""
+
+    name: str
+    params: tuple[Parameter, ...]
+    precondition: Formula
+    add: tuple[Atom, ...]
+    delete: tuple[Atom, ...]
+    cost: Cost | None = None
+    line: int = 0
+
+
+@frozen
+class DerivedPredicate:
+    """``(:derived (head ?x ...) body)``: the head holds exactly when the body does."""
+
+    head: Atom
+    params: tuple[Parameter, ...]
+    body: Formula
+
+
+@frozen
+class Domain:
+    name: str
+    requirements: tuple[str, ...]
+    #: ``(type, parent)`` pairs; ``object`` is the root and needs no entry.
+    types: tuple[tuple[str, str], ...]
+    constants: tuple[Parameter, ...]
+    predicates: tuple[Predicate, ...]
+    functions: tuple[str, ...]
+    actions: tuple[Action, ...]
+    derived: tuple[DerivedPredicate, ...]
+
+
+@frozen
+class Problem:
+    name: str
+    domain_name: str
+    objects: tuple[Parameter, ...]
+    init: tuple[Atom, ...]
+    #: Initial values of numeric functions, e.g. ``(= (road-length a b) 5)``.
+    numeric: tuple[tuple[Atom, int], ...]
+    goal: Formula
+    #: ``(:metric minimize (total-cost))``.
+    minimize_cost: bool
+
+
+def _objects_by_type(domain: Domain, problem: Problem) -> dict[str, tuple[str, ...]]:
+    parents: dict[str, set[str]] = {}
+    for child, parent in domain.types:
+        parents.setdefault(child, set()).add(parent)
+
+    def ancestors(kind: str) -> set[str]:
+        seen = {kind, "object"}
+        todo = [kind]
+        while todo:
+            for parent in parents.get(todo.pop(), ()):
+                if parent not in seen:
+                    seen.add(parent)
+                    todo.append(parent)
+        return seen
+
+    members: dict[str, set[str]] = {"object": set()}
+    for child, parent in domain.types:
+        members.setdefault(child, set())
+        members.setdefault(parent, set())
+    for obj in (*domain.constants, *problem.objects):
+        for kind in obj.types:
+            for ancestor in ancestors(kind):
+                members.setdefault(ancestor, set()).add(obj.name)
+    return {kind: tuple(sorted(names)) for kind, names in members.items()}
+
+
+@frozen
+class PddlTask:
+    """A domain and a problem, with the files they came from (for messages)."""
+
+    domain: Domain
+    problem: Problem
+    domain_path: str = ""
+    problem_path: str = ""
+    #: Every type's objects (including subtypes' objects), sorted.
+    objects_by_type: dict[str, tuple[str, ...]] = field(init=False)
+
+    @objects_by_type.default
+    def _objects_by_type_default(self) -> dict[str, tuple[str, ...]]:
+        return _objects_by_type(self.domain, self.problem)
+
+    def objects_of(self, types: tuple[str, ...]) -> tuple[str, ...]:
+        """The objects of any of ``types`` (one type, or the members of ``(either ...)``)."""
+        if len(types) == 1:
+            return self.objects_by_type.get(types[0], ())
+        return tuple(sorted({o for kind in types for o in self.objects_by_type.get(kind, ())}))
+
+    @property
+    def name(self) -> str:
+        return self.problem.name
