@@ -40,3 +40,22 @@ def test_evaluators_are_frozen(make_node) -> None:
             except attrs.exceptions.FrozenInstanceError:
                 continue
             raise AssertionError(f"{cls.name}.{field.name} is mutable")
+
+
+def test_heuristic_hook_returns_documented_heuristics_with_unique_names() -> None:
+    classes = plugin.strips_register_heuristics()
+    names = [cls.name for cls in classes]
+    assert len(set(names)) == len(names)
+    assert {"goal-count", "ff"} <= set(names)
+    for cls in classes:
+        assert attrs.has(cls)
+        assert isinstance(cls.admissible, bool)
+        assert inspect.getdoc(cls) and len(inspect.getdoc(cls)) > 80
+        cls()  # every option has a valid default
+
+
+def test_heuristics_are_registered_through_the_core_spec() -> None:
+    manager = pluggy.PluginManager(hookspecs.PROJECT)
+    manager.add_hookspecs(hookspecs)
+    manager.register(plugin)
+    assert manager.hook.strips_register_heuristics() == [plugin.strips_register_heuristics()]

@@ -1,5 +1,5 @@
-"""Registers this distribution's evaluators (entry point ``evaluators`` in group
-``strips_framework``)."""
+"""Registers this distribution's node evaluators and state heuristics (entry point
+``evaluators`` in group ``strips_framework``)."""
 
 from __future__ import annotations
 
@@ -8,13 +8,21 @@ from typing import TYPE_CHECKING
 from strips_evaluators.breadth_first import BreadthFirst
 from strips_evaluators.goal_count import GoalCount
 from strips_evaluators.goal_list_bound import GoalListBound
+from strips_evaluators.heuristics.additive import AdditiveHeuristic
+from strips_evaluators.heuristics.ff import FFHeuristic
+from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
 from strips_evaluators.paper import PaperEvaluator
 from strips_framework.hookspecs import hookimpl
 
 if TYPE_CHECKING:
-    from strips_framework.search.components import NodeEvaluator
+    from strips_framework.search.components import NodeEvaluator, StateHeuristic
 
 
 @hookimpl
 def strips_register_evaluators() -> list[type[NodeEvaluator]]:
     return [PaperEvaluator, BreadthFirst, GoalCount, GoalListBound]
+
+
+@hookimpl
+def strips_register_heuristics() -> list[type[StateHeuristic]]:
+    return [GoalCountHeuristic, AdditiveHeuristic, FFHeuristic]

@@ -1,0 +1,33 @@
+"""The goal-count heuristic: how many goal facts the state lacks."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from attrs import frozen
+
+from strips_framework.grounding.task import GroundTask
+
+
+@frozen
+class GoalCountEstimator:
+    goal_mask: int
+
+    def estimate(self, state: int) -> float:
+        return (self.goal_mask & ~state).bit_count()
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
+        return (self.goal_mask & ~state).bit_count(), ()
+
+
+@frozen
+class GoalCountHeuristic:
+    """The number of goal facts false in the state: one bit count per state, so the
+    cheapest informed heuristic. Not admissible (one operator can add several goal facts,
+    and operator costs are ignored); never detects dead ends; no preferred operators."""
+
+    name: ClassVar[str] = "goal-count"
+    admissible: ClassVar[bool] = False
+
+    def for_task(self, task: GroundTask) -> GoalCountEstimator:
+        return GoalCountEstimator(task.goal_mask)

@@ -1,0 +1,108 @@
+"""The delete relaxation of a ground task, laid out for fast per-state explorations.
+
+Relaxed heuristics (hmax, hadd, hFF, LM-cut, landmarks) ignore delete effects and negative
+preconditions; an axiom becomes a zero-cost relaxed operator from its positive body to its
+head. Everything is stored as flat lists indexed by relaxed-operator or fact number, so
+that an exploration touches only Python lists and small ints: its inner loop runs once
+per (fact, operator it is a precondition of) pair, and a counter per operator says when
+all its preconditions are reached. Operators without preconditions get the artificial
+fact :attr:`RelaxedTask.true_fact`, which holds in every state, so that explorations
+need no special case for them.
+"""
+
+from __future__ import annotations
+
+from attrs import frozen
+
+from strips_framework.grounding.task import GroundTask
+
+#: ``operator`` entry of a relaxed operator that comes from an axiom.
+AXIOM = -1
+
+
+@frozen
+class RelaxedTask:
+    """Relaxed operators ``0..len(pre)-1``: real operators with add effects (in task
+    order), then axioms. Operators without add effects are left out: they reach nothing."""
+
+    num_facts: int
+    pre: list[tuple[int, ...]]
+    add: list[tuple[int, ...]]
+    cost: list[int]
+    #: Index into ``task.operators``, or :data:`AXIOM`.
+    operator: list[int]
+    #: Number of preconditions of each relaxed operator: the template of the counters.
+    pre_count: list[int]
+    #: For each fact, the relaxed operators it is a precondition of.
+    pre_of: list[list[int]]
+    #: The artificial fact that holds in every state, precondition of the operators
+    #: that have none.
+    true_fact: int
+    goal: tuple[int, ...]
+    is_goal: list[bool]
+    #: True when every operator costs 1 (axioms cost 0): breadth-first layers then suffice.
+    unit_cost: bool
+    #: Priority-queue keys are ``cost << key_shift | fact``: one int, compared in C.
+    key_shift: int
+
+
+def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
+    """The relaxed task; ``extra_facts`` reserves fact numbers after the task's own and
+    :attr:`RelaxedTask.true_fact` for artificial facts a heuristic adds."""
+    pre: list[tuple[int, ...]] = []
+    add: list[tuple[int, ...]] = []
+    cost: list[int] = []
+    operator: list[int] = []
+    true_fact = len(task.facts)
+    for index, op in enumerate(task.operators):
+        if op.add:
+            pre.append(_unique(op.pre) or (true_fact,))
+            add.append(_unique(op.add))
+            cost.append(op.cost)
+            operator.append(index)
+    for axiom in task.axioms:
+        pre.append(_unique(axiom.body) or (true_fact,))
+        add.append((axiom.head,))
+        cost.append(0)
+        operator.append(AXIOM)
+    num_facts = true_fact + 1 + extra_facts
+    pre_of: list[list[int]] = [[] for _ in range(num_facts)]
+    for op, facts in enumerate(pre):
+        for fact in facts:
+            pre_of[fact].append(op)
+    goal = _unique(task.goal)
+    is_goal = [False] * num_facts
+    for fact in goal:
+        is_goal[fact] = True
+    return RelaxedTask(
+        num_facts=num_facts,
+        pre=pre,
+        add=add,
+        cost=cost,
+        operator=operator,
+        pre_count=[len(facts) for facts in pre],
+        pre_of=pre_of,
+        true_fact=true_fact,
+        goal=goal,
+        is_goal=is_goal,
+        unit_cost=all(c == 1 for c, o in zip(cost, operator) if o != AXIOM),
+        key_shift=max(num_facts, 1).bit_length(),
+    )
+
+
+def facts_in(state: int) -> list[int]:
+    """The fact numbers set in ``state``, ascending. Scans the binary string with
+    ``str.find``, so the Python-level work is one step per true fact, not per fact.
+    Explorations append :attr:`RelaxedTask.true_fact` to it."""
+    digits = bin(state)[:1:-1]
+    facts = []
+    find = digits.find
+    position = find("1")
+    while position >= 0:
+        facts.append(position)
+        position = find("1", position + 1)
+    return facts
+
+
+def _unique(facts: tuple[int, ...]) -> tuple[int, ...]:
+    return tuple(dict.fromkeys(facts))

@@ -1,0 +1,71 @@
+"""Heuristic values on small tasks, worked out by hand (see SMALL_TASKS in conftest.py)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from strips_evaluators.heuristics.additive import AdditiveHeuristic
+from strips_evaluators.heuristics.ff import FFHeuristic
+from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
+
+HEURISTICS = {cls.name: cls for cls in (GoalCountHeuristic, AdditiveHeuristic, FFHeuristic)}
+
+INF = math.inf
+
+#: Initial-state value of each heuristic on each task.
+EXPECTED = {
+    "chain": {"goal-count": 1, "hadd": 3, "ff": 3},
+    "fork": {"goal-count": 1, "hadd": 3, "ff": 3},
+    "shared": {"goal-count": 2, "hadd": 4, "ff": 3},
+    "costs": {"goal-count": 1, "hadd": 3, "ff": 3},
+    "axiom": {"goal-count": 1, "hadd": 3, "ff": 2},
+    "negative": {"goal-count": 1, "hadd": 1, "ff": 1},
+    "dead": {"goal-count": 2, "hadd": INF, "ff": INF},
+}
+
+
+@pytest.mark.parametrize(
+    ("task_name", "heuristic_name", "value"),
+    [(task, name, value) for task, row in EXPECTED.items() for name, value in row.items()],
+)
+def test_initial_state_value(small_task, task_name: str, heuristic_name: str, value: float) -> None:
+    task = small_task(task_name)
+    estimator = HEURISTICS[heuristic_name]().for_task(task)
+    assert estimator.estimate(task.init) == value
+    assert estimator.estimate_with_preferred(task.init)[0] == value
+
+
+@pytest.mark.parametrize("heuristic_name", sorted(HEURISTICS))
+@pytest.mark.parametrize("task_name", ["chain", "shared", "costs", "axiom"])
+def test_goal_states_score_zero(small_task, task_name: str, heuristic_name: str) -> None:
+    task = small_task(task_name)
+    goal_state = task.init | task.goal_mask
+    assert HEURISTICS[heuristic_name]().for_task(task).estimate(goal_state) == 0
+
+
+def test_ff_prefers_the_relaxed_plan_operators_applicable_in_the_state(small_task) -> None:
+    task = small_task("fork")
+    value, preferred = FFHeuristic().for_task(task).estimate_with_preferred(task.init)
+    assert value == 3
+    assert [task.operators[i].name for i in preferred] == ["sp", "sq"]
+
+
+def test_ff_follows_the_cheapest_supporters(small_task) -> None:
+    task = small_task("costs")
+    _, preferred = FFHeuristic().for_task(task).estimate_with_preferred(task.init)
+    assert [task.operators[i].name for i in preferred] == ["to-m"]
+
+
+def test_ff_does_not_prefer_operators_whose_negative_precondition_fails(small_task) -> None:
+    task = small_task("negative")
+    value, preferred = FFHeuristic().for_task(task).estimate_with_preferred(task.init)
+    assert (value, list(preferred)) == (1, [])
+    unlocked = task.init & ~(1 << task.facts.index("q"))
+    assert FFHeuristic().for_task(task).estimate_with_preferred(unlocked) == (1, [0])
+
+
+def test_ff_on_a_dead_end_prefers_nothing(small_task) -> None:
+    task = small_task("dead")
+    assert FFHeuristic().for_task(task).estimate_with_preferred(task.init) == (INF, [])
