@@ -1,0 +1,138 @@
+"""Normalization of lifted formulas to what grounding joins: disjunctions of conjunctions
+of literals.
+
+``imply`` is rewritten, negation pushed to the atoms, ``forall`` expanded over the objects
+of its types, and ``exists`` turned into extra (renamed) variables of the conjunction, so
+that grounding binds them like action parameters instead of trying every object. An
+action whose precondition has several disjuncts becomes one ground operator per disjunct,
+all with the action's IPC name.
+"""
+
+from __future__ import annotations
+
+from itertools import product
+
+from attrs import frozen
+
+from strips_framework.pddl.formulas import (
+    And,
+    Atom,
+    Exists,
+    Forall,
+    Formula,
+    Imply,
+    Not,
+    Or,
+    Parameter,
+)
+from strips_framework.pddl.task import PddlTask
+
+
+@frozen
+class Clause:
+    """A conjunction of literals over the outer variables plus its own ``params``."""
+
+    params: tuple[Parameter, ...] = ()
+    positive: tuple[Atom, ...] = ()
+    negative: tuple[Atom, ...] = ()
+
+    def join(self, other: Clause) -> Clause:
+        return Clause(
+            self.params + other.params,
+            self.positive + other.positive,
+            self.negative + other.negative,
+        )
+
+
+def substitute_formula(formula: Formula, binding: dict[str, str]) -> Formula:
+    """``formula`` with the variables of ``binding`` replaced (quantified ones shadow)."""
+    if isinstance(formula, Atom):
+        return Atom(formula.predicate, tuple(binding.get(arg, arg) for arg in formula.args))
+    if isinstance(formula, Not):
+        return Not(substitute_formula(formula.part, binding))
+    if isinstance(formula, And | Or):
+        return type(formula)(tuple(substitute_formula(part, binding) for part in formula.parts))
+    if isinstance(formula, Imply):
+        return Imply(
+            substitute_formula(formula.condition, binding),
+            substitute_formula(formula.consequence, binding),
+        )
+    inner = {name: value for name, value in binding.items() if name not in _names(formula.params)}
+    return type(formula)(formula.params, substitute_formula(formula.body, inner))
+
+
+def _names(params: tuple[Parameter, ...]) -> set[str]:
+    return {param.name for param in params}
+
+
+class Normalizer:
+    """Turns formulas of one task into clause lists; fresh names for ``exists`` variables
+    come from a counter, so the result does not depend on hashing."""
+
+    def __init__(self, task: PddlTask) -> None:
+        self.task = task
+        self._fresh = 0
+
+    def clauses(self, formula: Formula) -> list[Clause]:
+        """The disjuncts of ``formula``; contradictory ones and false equalities dropped."""
+        return [clause for clause in self._dnf(formula, False) if _consistent(clause)]
+
+    def _dnf(self, formula: Formula, negated: bool) -> list[Clause]:
+        if isinstance(formula, Atom):
+            return [Clause(negative=(formula,))] if negated else [Clause(positive=(formula,))]
+        if isinstance(formula, Not):
+            return self._dnf(formula.part, not negated)
+        if isinstance(formula, Imply):
+            return self._dnf(Or((Not(formula.condition), formula.consequence)), negated)
+        if isinstance(formula, And | Or):
+            parts = [self._dnf(part, negated) for part in formula.parts]
+            conjunctive = isinstance(formula, And) != negated
+            return _conjoin(parts) if conjunctive else [c for part in parts for c in part]
+        if isinstance(formula, Exists) != negated:
+            return self._extra_variables(formula.params, formula.body, negated)
+        return _conjoin([self._dnf(body, negated) for body in self._instances(formula)])
+
+    def _extra_variables(
+        self, params: tuple[Parameter, ...], body: Formula, negated: bool
+    ) -> list[Clause]:
+        fresh = []
+        for param in params:
+            self._fresh += 1
+            fresh.append(Parameter(f"{param.name}@{self._fresh}", param.types))
+        renamed = substitute_formula(body, {p.name: f.name for p, f in zip(params, fresh)})
+        head = Clause(params=tuple(fresh))
+        return [head.join(clause) for clause in self._dnf(renamed, negated)]
+
+    def _instances(self, formula: Exists | Forall) -> list[Formula]:
+        """The body of a quantifier once for every binding of its variables to objects."""
+        names = [param.name for param in formula.params]
+        domains = [self.task.objects_of(param.types) for param in formula.params]
+        return [
+            substitute_formula(formula.body, dict(zip(names, values)))
+            for values in product(*domains)
+        ]
+
+
+def _conjoin(parts: list[list[Clause]]) -> list[Clause]:
+    result = [Clause()]
+    for options in parts:
+        result = [done.join(option) for done in result for option in options]
+    return result
+
+
+def _consistent(clause: Clause) -> bool:
+    """False when the clause contradicts itself or compares two different objects."""
+    positive = set(clause.positive)
+    if any(atom in positive for atom in clause.negative):
+        return False
+    for atom in clause.positive:
+        if atom.predicate == "=" and _ground(atom) and atom.args[0] != atom.args[1]:
+            return False
+    for atom in clause.negative:
+        if atom.predicate == "=" and _ground(atom) and atom.args[0] == atom.args[1]:
+            return False
+    return True
+
+
+def _ground(atom: Atom) -> bool:
+    return not any(arg.startswith("?") for arg in atom.args)
