@@ -6,23 +6,22 @@ import math
 
 import pytest
 
-from strips_evaluators.heuristics.additive import AdditiveHeuristic
+from strips_evaluators import plugin
 from strips_evaluators.heuristics.ff import FFHeuristic
-from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
 
-HEURISTICS = {cls.name: cls for cls in (GoalCountHeuristic, AdditiveHeuristic, FFHeuristic)}
+HEURISTICS = {cls.name: cls for cls in plugin.strips_register_heuristics()}
 
 INF = math.inf
 
 #: Initial-state value of each heuristic on each task.
 EXPECTED = {
-    "chain": {"goal-count": 1, "hadd": 3, "ff": 3},
-    "fork": {"goal-count": 1, "hadd": 3, "ff": 3},
-    "shared": {"goal-count": 2, "hadd": 4, "ff": 3},
-    "costs": {"goal-count": 1, "hadd": 3, "ff": 3},
-    "axiom": {"goal-count": 1, "hadd": 3, "ff": 2},
-    "negative": {"goal-count": 1, "hadd": 1, "ff": 1},
-    "dead": {"goal-count": 2, "hadd": INF, "ff": INF},
+    "chain": {"blind": 1, "goal-count": 1, "hmax": 3, "hadd": 3, "ff": 3, "lmcut": 3},
+    "fork": {"blind": 1, "goal-count": 1, "hmax": 2, "hadd": 3, "ff": 3, "lmcut": 3},
+    "shared": {"blind": 1, "goal-count": 2, "hmax": 2, "hadd": 4, "ff": 3, "lmcut": 3},
+    "costs": {"blind": 1, "goal-count": 1, "hmax": 3, "hadd": 3, "ff": 3, "lmcut": 3},
+    "axiom": {"blind": 1, "goal-count": 1, "hmax": 2, "hadd": 3, "ff": 2, "lmcut": 2},
+    "negative": {"blind": 1, "goal-count": 1, "hmax": 1, "hadd": 1, "ff": 1, "lmcut": 1},
+    "dead": {"blind": 1, "goal-count": 2, "hmax": INF, "hadd": INF, "ff": INF, "lmcut": INF},
 }
 
 

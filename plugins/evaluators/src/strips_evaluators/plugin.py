@@ -9,8 +9,11 @@ from strips_evaluators.breadth_first import BreadthFirst
 from strips_evaluators.goal_count import GoalCount
 from strips_evaluators.goal_list_bound import GoalListBound
 from strips_evaluators.heuristics.additive import AdditiveHeuristic
+from strips_evaluators.heuristics.blind import BlindHeuristic
 from strips_evaluators.heuristics.ff import FFHeuristic
 from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
+from strips_evaluators.heuristics.hmax import MaxHeuristic
+from strips_evaluators.heuristics.lmcut import LMCutHeuristic
 from strips_evaluators.paper import PaperEvaluator
 from strips_framework.hookspecs import hookimpl
 
@@ -25,4 +28,11 @@ def strips_register_evaluators() -> list[type[NodeEvaluator]]:
 
 @hookimpl
 def strips_register_heuristics() -> list[type[StateHeuristic]]:
-    return [GoalCountHeuristic, AdditiveHeuristic, FFHeuristic]
+    return [
+        BlindHeuristic,
+        GoalCountHeuristic,
+        MaxHeuristic,
+        AdditiveHeuristic,
+        FFHeuristic,
+        LMCutHeuristic,
+    ]

@@ -8,13 +8,12 @@ informative for greedy search, not admissible.
 
 from __future__ import annotations
 
-import math
 from heapq import heappop, heappush
 from typing import ClassVar
 
 from attrs import frozen
 
-from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in, relax
+from strips_evaluators.heuristics.relaxation import RelaxedTask, relax, start_exploration
 from strips_framework.grounding.task import GroundTask
 
 #: ``supporter`` entry of a fact that holds in the state (nothing achieves it).
@@ -32,14 +31,10 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
     shift = relaxed.key_shift
     mask = (1 << shift) - 1
     pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
-    cost: list[float] = [math.inf] * relaxed.num_facts
+    queue, cost = start_exploration(relaxed, state)
     supporter = [IN_STATE] * relaxed.num_facts
     remaining = relaxed.pre_count[:]
     value = relaxed.cost[:]
-    queue = facts_in(state)  # keys with cost 0, ascending: already a heap
-    queue.append(relaxed.true_fact)
-    for fact in queue:
-        cost[fact] = 0
     goals_left = len(relaxed.goal)
     while queue:
         key = heappop(queue)

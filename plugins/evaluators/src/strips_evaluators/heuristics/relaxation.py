@@ -12,6 +12,8 @@ need no special case for them.
 
 from __future__ import annotations
 
+import math
+
 from attrs import frozen
 
 from strips_framework.grounding.task import GroundTask
@@ -90,10 +92,22 @@ def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
     )
 
 
+def start_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[int], list[float]]:
+    """The facts an exploration starts from (those of ``state`` and the always-true fact,
+    ascending: as cost-0 queue keys they already form a heap) and the fact costs, 0 for
+    them and ``math.inf`` for the others."""
+    start = facts_in(state)
+    start.append(relaxed.true_fact)
+    cost: list[float] = [math.inf] * relaxed.num_facts
+    for fact in start:
+        cost[fact] = 0
+    return start, cost
+
+
 def facts_in(state: int) -> list[int]:
     """The fact numbers set in ``state``, ascending. Scans the binary string with
     ``str.find``, so the Python-level work is one step per true fact, not per fact.
-    Explorations append :attr:`RelaxedTask.true_fact` to it."""
+    """
     digits = bin(state)[:1:-1]
     facts = []
     find = digits.find

@@ -1,0 +1,37 @@
+"""The blind heuristic: no guidance, but a valid lower bound."""
+
+from __future__ import annotations
+
+import math
+from typing import ClassVar
+
+from attrs import frozen
+
+from strips_framework.grounding.task import GroundTask
+
+
+@frozen
+class BlindEstimator:
+    goal_mask: int
+    #: What any step from a non-goal state costs at least (``math.inf`` with no operators).
+    min_cost: float
+
+    def estimate(self, state: int) -> float:
+        return 0 if state & self.goal_mask == self.goal_mask else self.min_cost
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
+        return self.estimate(state), ()
+
+
+@frozen
+class BlindHeuristic:
+    """0 in goal states, else the cheapest operator's cost (1 on unit-cost tasks):
+    a non-goal state needs at least one step. Admissible and consistent; A* with it is
+    uniform-cost search, the baseline the informed heuristics are measured against."""
+
+    name: ClassVar[str] = "blind"
+    admissible: ClassVar[bool] = True
+
+    def for_task(self, task: GroundTask) -> BlindEstimator:
+        min_cost = min((op.cost for op in task.operators), default=math.inf)
+        return BlindEstimator(task.goal_mask, min_cost)

@@ -1,0 +1,187 @@
+"""The LM-cut heuristic (Helmert & Domshlak 2009), as Fast Downward computes it.
+
+LM-cut finds disjunctive action landmarks one at a time and adds up their costs:
+
+1. hmax with *supporters*: each operator's supporter is its costliest precondition
+   (the last one reached). An artificial goal operator (cost 0) needs the goal facts and
+   adds the artificial goal fact; operators without preconditions need an always-true fact.
+2. The *goal zone*: facts from which the artificial goal is reached through zero-cost
+   operators in the justification graph (supporter -> effect edges).
+3. The *cut*: operators whose supporter is reachable from the state without entering the
+   goal zone and that add a goal-zone fact. Every plan uses one of them (a landmark).
+4. The cheapest cut operator's cost is added to h and taken off every cut operator; hmax
+   is updated incrementally and the loop repeats until the goal's hmax is 0.
+
+The landmarks are cost-disjoint (each operator's cost is shared out among them), so the
+sum never exceeds the optimal plan cost: admissible. Costs are integers, so the
+priority-queue keys pack ``cost << shift | fact`` into one int.
+"""
+
+from __future__ import annotations
+
+import math
+from heapq import heappop, heappush
+from typing import ClassVar
+
+import attrs
+from attrs import frozen
+
+from strips_evaluators.heuristics.hmax import max_exploration
+from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in, relax
+from strips_framework.grounding.task import GroundTask
+
+NO_SUPPORTER = -1
+
+
+@frozen
+class LMCutEstimator:
+    """``relaxed`` ends with the artificial goal operator, which adds ``goal_fact``."""
+
+    relaxed: RelaxedTask
+    goal_mask: int
+    goal_fact: int
+    #: For each fact, the relaxed operators that add it.
+    achievers: list[list[int]]
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
+        return self.estimate(state), ()
+
+    def estimate(self, state: int) -> float:
+        if state & self.goal_mask == self.goal_mask:
+            return 0
+        relaxed, goal_fact = self.relaxed, self.goal_fact
+        op_cost = relaxed.cost[:]
+        supporter = [NO_SUPPORTER] * len(relaxed.pre)
+        supporter_cost = [0] * len(relaxed.pre)
+        hmax = max_exploration(relaxed, state, op_cost, supporter, supporter_cost)
+        if hmax[goal_fact] == math.inf:
+            return math.inf
+        total = 0
+        while hmax[goal_fact]:
+            cut = self._cut(state, self._goal_zone(op_cost, supporter), supporter)
+            cut_cost = min(op_cost[op] for op in cut)
+            total += cut_cost
+            for op in cut:
+                op_cost[op] -= cut_cost
+            self._lower_hmax(cut, hmax, op_cost, supporter, supporter_cost)
+        return total
+
+    def _goal_zone(self, op_cost: list[int], supporter: list[int]) -> bytearray:
+        """Facts from which the artificial goal is reached by zero-cost justifications."""
+        zone = bytearray(self.relaxed.num_facts)
+        achievers = self.achievers
+        stack = [self.goal_fact]
+        while stack:
+            fact = stack.pop()
+            if zone[fact]:
+                continue
+            zone[fact] = 1
+            for op in achievers[fact]:
+                if not op_cost[op] and supporter[op] != NO_SUPPORTER:
+                    stack.append(supporter[op])
+        return zone
+
+    def _cut(self, state: int, goal_zone: bytearray, supporter: list[int]) -> list[int]:
+        """The operators whose supporter is reachable from ``state`` in the justification
+        graph without entering the goal zone, and that add a goal-zone fact."""
+        relaxed = self.relaxed
+        add, pre_of = relaxed.add, relaxed.pre_of
+        cut = []
+        seen = bytearray(relaxed.num_facts)
+        stack = facts_in(state)
+        stack.append(relaxed.true_fact)
+        for fact in stack:
+            seen[fact] = 1
+        while stack:
+            fact = stack.pop()
+            for op in pre_of[fact]:
+                if supporter[op] != fact:
+                    continue
+                effects = add[op]
+                for effect in effects:
+                    if goal_zone[effect]:
+                        cut.append(op)
+                        break
+                else:
+                    for effect in effects:
+                        if not seen[effect]:
+                            seen[effect] = 1
+                            stack.append(effect)
+        return cut
+
+    def _lower_hmax(
+        self,
+        cut: list[int],
+        hmax: list[float],
+        op_cost: list[int],
+        supporter: list[int],
+        supporter_cost: list[int],
+    ) -> None:
+        """Propagate the decreases the cheaper ``cut`` operators cause: only operators whose
+        supporter got cheaper can get cheaper, and then they may take a new supporter."""
+        relaxed = self.relaxed
+        shift = relaxed.key_shift
+        mask = (1 << shift) - 1
+        pre, add, pre_of = relaxed.pre, relaxed.add, relaxed.pre_of
+        queue: list[int] = []
+        for op in cut:
+            reached = supporter_cost[op] + op_cost[op]
+            for effect in add[op]:
+                if reached < hmax[effect]:
+                    hmax[effect] = reached
+                    heappush(queue, reached << shift | effect)
+        while queue:
+            key = heappop(queue)
+            fact_cost = key >> shift
+            fact = key & mask
+            if fact_cost > hmax[fact]:
+                continue
+            for op in pre_of[fact]:
+                if supporter[op] != fact or supporter_cost[op] <= fact_cost:
+                    continue
+                best, best_cost = fact, fact_cost
+                for condition in pre[op]:
+                    if hmax[condition] > best_cost:
+                        best, best_cost = condition, hmax[condition]
+                old_cost = supporter_cost[op]
+                supporter[op] = best
+                supporter_cost[op] = best_cost
+                if best_cost != old_cost:
+                    reached = best_cost + op_cost[op]
+                    for effect in add[op]:
+                        if reached < hmax[effect]:
+                            hmax[effect] = reached
+                            heappush(queue, reached << shift | effect)
+
+
+@frozen
+class LMCutHeuristic:
+    """LM-cut: the sum of the costs of cost-disjoint action landmarks found by repeated
+    hmax cuts. Admissible, and the strongest bound here (always >= hmax); the heuristic of
+    choice for optimal A*. Each state costs a few hmax explorations (one per landmark,
+    incremental after the first); no preferred operators."""
+
+    name: ClassVar[str] = "lmcut"
+    admissible: ClassVar[bool] = True
+
+    def for_task(self, task: GroundTask) -> LMCutEstimator:
+        relaxed = relax(task, extra_facts=1)
+        goal_fact = relaxed.true_fact + 1
+        goal_op = len(relaxed.pre)
+        pre_of = [ops[:] for ops in relaxed.pre_of]
+        for fact in relaxed.goal:
+            pre_of[fact].append(goal_op)
+        relaxed = attrs.evolve(
+            relaxed,
+            pre=[*relaxed.pre, relaxed.goal],
+            add=[*relaxed.add, (goal_fact,)],
+            cost=[*relaxed.cost, 0],
+            operator=[*relaxed.operator, AXIOM],
+            pre_count=[*relaxed.pre_count, len(relaxed.goal)],
+            pre_of=pre_of,
+        )
+        achievers: list[list[int]] = [[] for _ in range(relaxed.num_facts)]
+        for op, effects in enumerate(relaxed.add):
+            for fact in effects:
+                achievers[fact].append(op)
+        return LMCutEstimator(relaxed, task.goal_mask, goal_fact, achievers)
