@@ -1,0 +1,185 @@
+"""Properties every heuristic must have, checked on every reachable state of small tasks
+against the true cost to the goal (a backward Dijkstra over the explicit state space).
+
+The tasks are IPC first tasks (grounded from PDDL) and seeded random tasks with action
+costs (zero-cost operators included), negative preconditions and axioms.
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+import random
+from pathlib import Path
+
+import pytest
+
+from strips_evaluators import plugin
+from strips_evaluators.heuristics.hmax import max_exploration, unit_cost_hmax
+from strips_evaluators.heuristics.relaxation import relax
+from strips_framework.grounding import ground
+from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask, mask_of
+from strips_framework.pddl import find_domain, load_task
+
+
+def _find_ipc() -> Path | None:
+    """``shared/bench/ipc`` beside the repository; without it the IPC cases skip."""
+    for parent in Path(__file__).resolve().parents:
+        if (parent / "shared" / "bench" / "ipc").is_dir():
+            return parent / "shared" / "bench" / "ipc"
+    return None
+
+
+IPC = _find_ipc()
+PDDL_DOMAINS = ["blocks", "gripper", "depot", "zenotravel", "transport", "miconic", "pegsol"]
+HEURISTICS = {cls.name: cls for cls in plugin.strips_register_heuristics()}
+
+
+def ipc_task(domain: str) -> GroundTask:
+    if IPC is None:
+        pytest.skip("shared/bench/ipc not found")
+    problem = IPC / domain / "task01.pddl"
+    return ground(load_task(find_domain(problem), problem))
+
+
+def random_task(seed: int) -> GroundTask:
+    """A small random task: 7 basic facts, 2 derived ones, 10 operators with costs 0..3."""
+    rng = random.Random(seed)
+    basic = list(range(7))
+    derived = [7, 8]
+    operators = []
+    for index in range(10):
+        pre = tuple(rng.sample(basic + derived, rng.randint(0, 2)))
+        add = tuple(rng.sample(basic, rng.randint(1, 2)))
+        delete = tuple(f for f in rng.sample(basic, rng.randint(0, 2)) if f not in add)
+        pre_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)) if f not in pre)
+        operators.append(
+            GroundOperator(f"(op{index})", pre, add, delete, rng.randint(0, 3), pre_neg)
+        )
+    axioms = (
+        GroundAxiom(7, tuple(rng.sample(basic, 2))),
+        GroundAxiom(8, tuple(rng.sample(basic, 1)), tuple(rng.sample(basic, 1))),
+    )
+    task = GroundTask(
+        name=f"random{seed}",
+        facts=tuple(f"(f{i})" for i in range(9)),
+        operators=tuple(operators),
+        init=0,
+        goal=tuple(rng.sample(basic + derived, rng.randint(1, 3))),
+        axioms=axioms,
+        derived=tuple(derived),
+        uses_costs=True,
+    )
+    init = AxiomEvaluator(task).evaluate(mask_of(tuple(rng.sample(basic, rng.randint(1, 3)))))
+    return GroundTask(
+        task.name, task.facts, task.operators, init, task.goal, axioms, task.derived, True
+    )
+
+
+def optimal_costs(task: GroundTask) -> dict[int, float]:
+    """h* of every state reachable from the initial state (``math.inf``: dead end)."""
+    evaluate = AxiomEvaluator(task).evaluate
+    predecessors: dict[int, list[tuple[int, int]]] = {task.init: []}
+    frontier = [task.init]
+    while frontier:
+        state = frontier.pop()
+        for op in task.operators:
+            if op.applicable(state):
+                successor = evaluate(op.apply(state))
+                if successor not in predecessors:
+                    predecessors[successor] = []
+                    frontier.append(successor)
+                predecessors[successor].append((state, op.cost))
+    cost = {state: math.inf for state in predecessors}
+    queue = [(0, state) for state in predecessors if task.is_goal(state)]
+    for _, state in queue:
+        cost[state] = 0
+    while queue:
+        value, state = heapq.heappop(queue)
+        if value > cost[state]:
+            continue
+        for predecessor, step in predecessors[state]:
+            if value + step < cost[predecessor]:
+                cost[predecessor] = value + step
+                heapq.heappush(queue, (value + step, predecessor))
+    return cost
+
+
+TASKS = [*(f"ipc:{domain}" for domain in PDDL_DOMAINS), *(f"random:{seed}" for seed in range(40))]
+
+
+@pytest.fixture(scope="module", params=TASKS)
+def task_and_costs(request) -> tuple[GroundTask, dict[int, float]]:
+    kind, name = request.param.split(":")
+    task = ipc_task(name) if kind == "ipc" else random_task(int(name))
+    return task, optimal_costs(task)
+
+
+def values(task: GroundTask, name: str, states) -> dict[int, float]:
+    estimator = HEURISTICS[name]().for_task(task)
+    return {state: estimator.estimate(state) for state in states}
+
+
+def test_admissible_heuristics_never_overestimate(task_and_costs) -> None:
+    task, optimal = task_and_costs
+    for name, cls in HEURISTICS.items():
+        if cls.admissible:
+            for state, value in values(task, name, optimal).items():
+                assert value <= optimal[state], (name, task.facts_of(state))
+
+
+def test_dead_ends_are_real_and_goals_score_zero(task_and_costs) -> None:
+    task, optimal = task_and_costs
+    for name in HEURISTICS:
+        for state, value in values(task, name, optimal).items():
+            if value == math.inf:
+                assert optimal[state] == math.inf, (name, task.facts_of(state))
+            if task.is_goal(state):
+                assert value == 0, name
+
+
+def test_relaxation_bounds_are_ordered(task_and_costs) -> None:
+    """hmax <= LM-cut <= h+ <= hFF, and hmax <= hadd; all relaxed heuristics agree on
+    which states are relaxed dead ends."""
+    task, optimal = task_and_costs
+    h = {name: values(task, name, optimal) for name in ("hmax", "hadd", "ff", "lmcut")}
+    for state in optimal:
+        assert h["hmax"][state] <= h["lmcut"][state] <= h["ff"][state], task.facts_of(state)
+        assert h["hmax"][state] <= h["hadd"][state]
+        assert len({h[name][state] == math.inf for name in h}) == 1
+
+
+def test_preferred_operators_are_applicable_and_come_with_the_estimate(task_and_costs) -> None:
+    task, optimal = task_and_costs
+    for name, cls in HEURISTICS.items():
+        estimator = cls().for_task(task)
+        for state in optimal:
+            value, preferred = estimator.estimate_with_preferred(state)
+            assert value == estimator.estimate(state)
+            assert list(preferred) == sorted(set(preferred))
+            assert all(task.operators[i].applicable(state) for i in preferred), name
+
+
+def test_ff_prefers_some_operator_unless_at_a_goal_or_dead_end(task_and_costs) -> None:
+    """Without negative preconditions, a relaxed plan always starts with an operator that
+    is applicable in the state."""
+    task, optimal = task_and_costs
+    if any(op.pre_neg for op in task.operators):
+        pytest.skip("negative preconditions can block every relaxed-plan operator")
+    estimator = HEURISTICS["ff"]().for_task(task)
+    for state in optimal:
+        value, preferred = estimator.estimate_with_preferred(state)
+        assert bool(preferred) == (0 < value < math.inf)
+
+
+def test_unit_cost_layers_agree_with_the_dijkstra_exploration(task_and_costs) -> None:
+    task, optimal = task_and_costs
+    relaxed = relax(task)
+    if not relaxed.unit_cost:
+        pytest.skip("not a unit-cost task")
+    unused = [0] * len(relaxed.pre)
+    for state in optimal:
+        cost = max_exploration(relaxed, state, relaxed.cost, unused, unused[:])
+        expected = max(cost[fact] for fact in relaxed.goal)
+        assert unit_cost_hmax(relaxed, state) == expected
