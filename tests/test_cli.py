@@ -102,7 +102,7 @@ def test_validate_replays_a_plan_file_in_the_simulator(tmp_path, capsys):
 def test_bench_runs_every_combination_and_checks_plans(tmp_path, capsys):
     problem = Path(__file__).resolve().parent / "data" / "push-one-box.strips"
     out = tmp_path / "runs.csv"
-    args = ["bench", str(problem), "--strategies", "means-ends,astar",
+    args = ["bench", str(problem), "--strategies", "means-ends,model-astar",
             "--evaluators", "breadth-first,goal-count", "--csv", str(out)]
     assert main(args) == 0
     table = capsys.readouterr().out.splitlines()

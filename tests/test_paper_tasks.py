@@ -51,7 +51,7 @@ def test_the_harder_five_part_goal_is_solved(make_planner):
 
 
 def test_optimal_strategy_finds_the_four_step_light_plan(make_planner):
-    planner = make_planner(strategy="astar", evaluator="breadth-first")
+    planner = make_planner(strategy="model-astar", evaluator="breadth-first")
     problem = planner.load(EXAMPLES / "robot-world/light.strips")
     result = planner.solve(problem)
     assert result.solved, result.status

@@ -9,26 +9,38 @@ import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
-from strips_framework.bench import markdown_table, run_matrix, write_csv
+from strips_framework import exit_codes
 from strips_framework.config import Config
-from strips_framework.errors import InputError, StripsError
-from strips_framework.planner import Planner
+from strips_framework.errors import StripsError
+from strips_framework.ipc import plan_text, read_plan
+from strips_framework.planner import PDDL_SUFFIX, Planner
 from strips_framework.plugins import KINDS
+from strips_framework.search.forward.budget import LimitReached
+from strips_framework.search.forward.result import ForwardResult
 from strips_framework.search.result import SearchResult
-from strips_framework.simulate import replay
-from strips_framework.tree_dot import search_tree_to_dot
 
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="strips",
         description="STRIPS (Fikes & Nilsson, 1971): means-ends planning over first-order "
-        "world models, with pluggable provers, evaluators and strategies.",
+        "world models, with pluggable provers, evaluators and strategies; forward search "
+        "with state heuristics on PDDL tasks.",
+        epilog="exit codes: 0 plan found, 1 invalid plan (validate), 2 bad input or config, "
+        "11 unsolvable, 12 search ended without a plan (incomplete), 22 out of memory, "
+        "23 out of time",
     )
     commands = parser.add_subparsers(dest="command", required=True)
 
     solve = commands.add_parser("solve", help="search for a plan")
-    solve.add_argument("problem", type=Path, help="problem file (e.g. examples/three-boxes.strips)")
+    solve.add_argument(
+        "files",
+        type=Path,
+        nargs="+",
+        metavar="[DOMAIN] PROBLEM",
+        help="a problem file (e.g. examples/three-boxes.strips), or a PDDL problem with "
+        "its domain before it (without one, the domain is looked for beside the problem)",
+    )
     solve.add_argument("--config", type=Path, help="TOML config (default: built-in defaults)")
     solve.add_argument("--plan-file", type=Path, help="also write the plan here, IPC style")
     solve.add_argument("--json", action="store_true", help="print the result as JSON")
@@ -42,8 +54,14 @@ def _parser() -> argparse.ArgumentParser:
     validate = commands.add_parser(
         "validate", help="replay a plan in the independent simulator and check the goal"
     )
-    validate.add_argument("problem", type=Path, help="problem file")
-    validate.add_argument("plan", type=Path, help="plan file: one step a line, ';' comments")
+    validate.add_argument(
+        "files",
+        type=Path,
+        nargs="+",
+        metavar="[DOMAIN] PROBLEM PLAN",
+        help="problem file (PDDL: with its domain before it, or found beside it) and the "
+        "plan: one step a line, ';' comments",
+    )
 
     bench = commands.add_parser(
         "bench", help="solve problems with every strategy x evaluator x prover; print a table"
@@ -77,7 +95,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _plugins(planner)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
-        return 2
+        return exit_codes.INPUT_ERROR
+
+
+def _domain_and_problem(files: list[Path], command: str, rest: int = 0) -> tuple[Path | None, Path]:
+    """``[DOMAIN] PROBLEM`` from the positional arguments (``rest`` more follow them)."""
+    if not 1 <= len(files) - rest <= 2:
+        names = "[DOMAIN] PROBLEM" + " PLAN" * rest
+        raise StripsError(f"usage: strips {command} {names} (got {len(files)} files)")
+    given = files[: len(files) - rest]
+    return (given[0] if len(given) == 2 else None), given[-1]
 
 
 def _plan_lines(result: SearchResult) -> list[str]:
@@ -102,16 +129,53 @@ def _statistics_lines(result: SearchResult) -> list[str]:
     ]
 
 
+def _forward_lines(result: ForwardResult) -> list[str]:
+    """The plan, then the figures one a line (``expanded: N`` as Fast Downward's users'
+    scripts look for it)."""
+    s = result.statistics
+    length = len(result.plan) if result.plan is not None else "-"
+    cost = result.cost if result.cost is not None else "-"
+    return [
+        *(result.plan or ()),
+        f"status: {result.status}",
+        f"plan length: {length}",
+        f"plan cost: {cost}",
+        f"expanded: {s.expanded}",
+        f"evaluated: {s.evaluated}",
+        f"generated: {s.generated}",
+        f"reopened: {s.reopened}",
+        f"dead ends: {s.dead_ends}",
+        f"facts: {s.facts}, operators: {s.operators}",
+        (
+            f"time: parse {s.parse_seconds:.3f} s, ground {s.ground_seconds:.3f} s, "
+            f"search {s.search_seconds:.3f} s"
+        ),
+        f"peak memory: {s.peak_memory_mib:.1f} MiB",
+    ]
+
+
 def _solve(planner: Planner, args: argparse.Namespace) -> int:
-    problem = planner.load(args.problem)
-    result = planner.solve(problem)
+    from strips_framework.process_limits import enforced
+
+    domain, problem = _domain_and_problem(args.files, "solve")
+    try:
+        with enforced(planner.config.limits):
+            result = planner.run(problem, domain)
+    except LimitReached as limit:  # while reading or grounding: no search statistics yet
+        return _report_limit(args, limit.status)
+    except MemoryError:
+        return _report_limit(args, "memory-limit")
+    if isinstance(result, ForwardResult):
+        return _report_forward(planner, args, problem, result)
     if args.tree:
-        args.tree.write_text(search_tree_to_dot(result, f"{problem.name}: search tree"))
+        from strips_framework.tree_dot import search_tree_to_dot
+
+        args.tree.write_text(search_tree_to_dot(result, f"{problem.stem}: search tree"))
     if args.plan_file and result.plan is not None:
-        args.plan_file.write_text("\n".join(_plan_lines(result)) + f"\n; cost = {len(result.plan)} (unit cost)\n")
+        args.plan_file.write_text(plan_text(_plan_lines(result), len(result.plan), False))
     if args.json:
         payload = {
-            "problem": problem.name,
+            "problem": problem.stem,
             "status": result.status,
             "plan": [str(step) for step in result.plan] if result.plan is not None else None,
             "statistics": result.statistics.as_dict(),
@@ -120,7 +184,52 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
         print(json.dumps(payload, indent=2))
     else:
         print("\n".join(_plan_lines(result) + _statistics_lines(result)))
-    return 0 if result.solved else 1
+    return exit_codes.for_status(result.status)
+
+
+def _report_forward(
+    planner: Planner, args: argparse.Namespace, problem: Path, result: ForwardResult
+) -> int:
+    if args.plan_file and result.plan is not None and result.cost is not None:
+        args.plan_file.write_text(plan_text(result.plan, result.cost, result.uses_costs))
+    code = exit_codes.for_status(result.status)
+    if args.json:
+        payload = {
+            "problem": str(problem),
+            "status": result.status,
+            "limit": result.limit,
+            "exit_code": code,
+            "plan": list(result.plan) if result.plan is not None else None,
+            "plan_length": len(result.plan) if result.plan is not None else None,
+            "cost": result.cost,
+            "statistics": result.statistics.as_dict(),
+            "config": {kind: choice.name for kind, choice in planner.config.choices.items()},
+        }
+        print(json.dumps(payload, indent=2))
+    else:
+        print("\n".join(_forward_lines(result)))
+    return code
+
+
+def _report_limit(args: argparse.Namespace, status: str) -> int:
+    """A limit hit before the search began (reading or grounding)."""
+    code = exit_codes.for_status(status)
+    if args.json:
+        print(
+            json.dumps(
+                {
+                    "status": status,
+                    "limit": status.removesuffix("-limit"),
+                    "exit_code": code,
+                    "plan": None,
+                    "statistics": None,
+                },
+                indent=2,
+            )
+        )
+    else:
+        print(f"status: {status} (before the search began)")
+    return code
 
 
 def _prove(planner: Planner, args: argparse.Namespace) -> int:
@@ -134,18 +243,24 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
 
 
 def _validate(planner: Planner, args: argparse.Namespace) -> int:
-    problem = planner.load(args.problem)
-    try:
-        lines = args.plan.read_text(encoding="utf-8").splitlines()
-    except OSError as error:
-        raise InputError(str(args.plan), None, None, f"cannot read plan: {error.strerror}") from None
-    steps = [line.split(";")[0].strip() for line in lines]
-    outcome = replay(problem, [step for step in steps if step])
+    domain, problem = _domain_and_problem(args.files, "validate", rest=1)
+    steps = read_plan(args.files[-1])
+    if domain is not None or problem.suffix.lower() == PDDL_SUFFIX:
+        from strips_framework.pddl.validate import validate_plan
+
+        check = validate_plan(planner.load_pddl(problem, domain), steps)
+        print(check.message)
+        return exit_codes.SOLVED if check.valid else exit_codes.INVALID_PLAN
+    from strips_framework.simulate import replay
+
+    outcome = replay(planner.load(problem), steps)
     print(outcome.message)
-    return 0 if outcome.valid else 1
+    return exit_codes.SOLVED if outcome.valid else exit_codes.INVALID_PLAN
 
 
 def _bench(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.bench import markdown_table, run_matrix, write_csv
+
     def names(kind: str, given: str | None) -> list[str]:
         if given:
             return [name.strip() for name in given.split(",") if name.strip()]

@@ -10,10 +10,15 @@
     [evaluator]
     name = "paper"
 
+    [heuristic]                  # for the strategies over ground tasks (PDDL)
+    name = "ff"
+
     [limits]
     time = 60        # wall-clock seconds
-    nodes = 10000    # nodes generated
+    nodes = 10000    # nodes generated (world-model strategies)
     effort = 300     # prover effort per proof attempt
+    expansions = 100000   # states expanded (forward strategies); unlimited if absent
+    memory = 4096    # MiB (forward strategies and the CLI); unlimited if absent
 
 Every table is optional; missing ones take the defaults in :data:`DEFAULT_CHOICES`.
 Mistakes are reported with their key path and what was expected.
@@ -32,13 +37,14 @@ from strips_framework.errors import ConfigError
 from strips_framework.plugins import KINDS, Registration, Registry
 from strips_framework.search.limits import Limits
 
-COMPONENTS = ("strategy", "prover", "difference", "relevance", "evaluator")
+COMPONENTS = ("strategy", "prover", "difference", "relevance", "evaluator", "heuristic")
 DEFAULT_CHOICES = {
     "strategy": "means-ends",
     "prover": "resolution",
     "difference": "uncompleted-proof",
     "relevance": "add-list",
     "evaluator": "paper",
+    "heuristic": "ff",
 }
 
 

@@ -1,19 +1,38 @@
 """The typed facade over the plugin registry: load a problem, build the configured
-components, and search. The CLI, the tests and library users all go through it."""
+components, and search. The CLI, the tests and library users all go through it.
+
+Two kinds of strategy meet here. World-model strategies (``means-ends``,
+``model-astar``) search first-order world models with a theorem prover and take a
+:class:`Problem`: a native ``.strips`` file, or a PDDL task translated to one. Strategies
+that declare ``works_on = "ground-task"`` (``astar``, ``lazy-gbfs``, ...) search the
+states of a :class:`GroundTask` with a state heuristic and take PDDL input, grounded.
+"""
 
 from __future__ import annotations
 
+import time
+import warnings
 from collections.abc import Iterable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
+import attrs
 from attrs import frozen
 
 from strips_framework.config import Config
-from strips_framework.errors import InputError
+from strips_framework.errors import ConfigError, InputError
 from strips_framework.plugins import Registry
 from strips_framework.problem import Problem
 from strips_framework.proving import TheoremProver
 from strips_framework.search.result import SearchResult
+
+if TYPE_CHECKING:
+    from strips_framework.grounding.task import GroundTask
+    from strips_framework.pddl import PddlTask
+    from strips_framework.search.forward.result import ForwardResult
+
+GROUND_TASK = "ground-task"
+PDDL_SUFFIX = ".pddl"
 
 
 @frozen
@@ -30,6 +49,12 @@ class Planner:
             planner.config.build(planner.registry, kind)
         return planner
 
+    @property
+    def searches_ground_tasks(self) -> bool:
+        """True when the configured strategy searches ground tasks (PDDL input only)."""
+        strategy = self.registry.get("strategy", self.config.choices["strategy"].name)
+        return getattr(strategy.cls, "works_on", "problem") == GROUND_TASK
+
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
         if not path.is_file():
@@ -37,14 +62,59 @@ class Planner:
         loader = self.registry.loader_for(path.suffix).cls()
         return loader.load(path)
 
+    def load_pddl(self, problem_path: Path, domain_path: Path | None = None) -> PddlTask:
+        """Read a PDDL problem and its domain (found beside it when not given)."""
+        from strips_framework.pddl import find_domain, load_task
+
+        return load_task(domain_path or find_domain(problem_path), problem_path)
+
     def prover(self) -> TheoremProver:
         return self.config.build(self.registry, "prover")
 
+    def run(
+        self, problem_path: Path, domain_path: Path | None = None
+    ) -> SearchResult | ForwardResult:
+        """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
+        solve it with the configured strategy, whichever kind it is."""
+        started = time.perf_counter()
+        if domain_path is None and problem_path.suffix.lower() != PDDL_SUFFIX:
+            if self.searches_ground_tasks:
+                raise ConfigError(
+                    f"{self.config.source}: strategy '{self.config.choices['strategy'].name}' "
+                    f"searches ground tasks, which are made from PDDL input; {problem_path} is a "
+                    "native problem (first-order world models and axioms): use a world-model "
+                    "strategy such as 'means-ends' or 'model-astar'"
+                )
+            return self.solve(self.load(problem_path))
+        pddl = self.load_pddl(problem_path, domain_path)
+        parsed = time.perf_counter()
+        if not self.searches_ground_tasks:
+            from strips_framework.pddl import to_problem
+
+            return self.solve(to_problem(pddl))
+        from strips_framework.grounding import ground
+
+        task = ground(pddl)
+        grounded = time.perf_counter()
+        result = self.solve_task(task, started)
+        statistics = attrs.evolve(
+            result.statistics,
+            parse_seconds=parsed - started,
+            ground_seconds=grounded - parsed,
+            search_seconds=time.perf_counter() - grounded,  # the heuristic's set-up included
+        )
+        return attrs.evolve(result, statistics=statistics)
+
     def solve(self, problem: Problem) -> SearchResult:
         """Search for a plan with the strategy, prover, difference extractor, relevance
-        filter and evaluator of the config."""
+        filter and evaluator of the config (a world-model strategy)."""
         build = self.config.build
         strategy = build(self.registry, "strategy")
+        if getattr(strategy, "works_on", "problem") == GROUND_TASK:
+            raise ConfigError(
+                f"{self.config.source}: strategy '{strategy.name}' searches ground tasks, "
+                "not first-order problems: give it PDDL input"
+            )
         return strategy.search(
             problem,
             build(self.registry, "prover"),
@@ -53,3 +123,23 @@ class Planner:
             build(self.registry, "evaluator"),
             self.config.limits,
         )
+
+    def solve_task(self, task: GroundTask, started: float | None = None) -> ForwardResult:
+        """Search ``task`` with the configured ground-task strategy and heuristic; the time
+        limit counts from ``started`` (default: now)."""
+        build = self.config.build
+        strategy = build(self.registry, "strategy")
+        if getattr(strategy, "works_on", "problem") != GROUND_TASK:
+            raise ConfigError(
+                f"{self.config.source}: strategy '{strategy.name}' searches world models, "
+                "not ground tasks"
+            )
+        heuristic = build(self.registry, "heuristic")
+        if getattr(strategy, "optimal", False) and not heuristic.admissible:
+            warnings.warn(
+                f"heuristic {heuristic.name!r} is not admissible: the plan "
+                f"{strategy.name} finds with it may not be optimal",
+                stacklevel=2,
+            )
+        started = time.perf_counter() if started is None else started
+        return strategy.search_task(task, heuristic.for_task(task), self.config.limits, started)

@@ -25,7 +25,8 @@ DEFAULT_PLUGINS = (
     "strips_framework.difference",
     "strips_framework.relevance",
     "strips_framework.search.means_ends",
-    "strips_framework.search.astar",
+    "strips_framework.search.model_astar",
+    "strips_framework.search.forward.plugin",
 )
 
 #: Each kind of implementation, by its config key: the hook that registers it, and the
@@ -50,6 +51,10 @@ KNOWN_PROVIDERS = {
     ("evaluator", "breadth-first"): "strips-evaluators",
     ("evaluator", "goal-count"): "strips-evaluators",
     ("evaluator", "astar-goals"): "strips-evaluators",
+    **{
+        ("heuristic", name): "strips-evaluators"
+        for name in ("blind", "goal-count", "hmax", "hadd", "ff", "lmcut", "lmcount")
+    },
 }
 
 AUTOLOAD_SWITCH = "STRIPS_DISABLE_PLUGIN_AUTOLOAD"

@@ -1,4 +1,4 @@
-"""A* over world models: the optimal strategy to compare means-ends analysis with.
+"""A* over world models (``model-astar``): the optimal strategy to compare means-ends analysis with.
 
 It works on the same world models, operators and prover as the STRIPS strategy but
 searches forward: a node's successors are all applicable operator instances, found by
@@ -39,13 +39,13 @@ from strips_framework.world import WorldModel
 
 
 @frozen
-class AStarSearch:
+class ModelAStarSearch:
     """Forward A* (best-first on the evaluator's score) with duplicate detection.
 
     ``max_answers`` bounds the applicable instances taken from one precondition proof.
     """
 
-    name: ClassVar[str] = "astar"
+    name: ClassVar[str] = "model-astar"
     max_answers: int = field(default=256, validator=[validators.instance_of(int), validators.gt(0)])
 
     def search(
@@ -125,4 +125,4 @@ class AStarSearch:
 
 @hookimpl
 def strips_register_strategies() -> list[type]:
-    return [AStarSearch]
+    return [ModelAStarSearch]

@@ -1,0 +1,39 @@
+"""The ``strips`` command's exit codes: Fast Downward's meanings, for every strategy.
+
+===  ==========================================================================
+0    a plan was found
+1    ``strips validate``: the plan is not valid
+2    bad input, config or usage (the message names the file, line or key)
+11   unsolvable: a complete search visited every reachable state
+12   search ended without a plan and without proof (an incomplete strategy such as
+     ``ehc`` or ``means-ends`` ran out of nodes, or a node or expansion limit was hit)
+22   out of memory (``[limits] memory``)
+23   out of time (``[limits] time``)
+===  ==========================================================================
+"""
+
+from __future__ import annotations
+
+SOLVED = 0
+INVALID_PLAN = 1
+INPUT_ERROR = 2
+UNSOLVABLE = 11
+UNSOLVED_INCOMPLETE = 12
+OUT_OF_MEMORY = 22
+OUT_OF_TIME = 23
+
+_BY_STATUS = {
+    "solved": SOLVED,
+    "unsolvable": UNSOLVABLE,
+    "exhausted-incomplete": UNSOLVED_INCOMPLETE,
+    "exhausted": UNSOLVED_INCOMPLETE,  # means-ends and model-astar: no proof of unsolvability
+    "expansion-limit": UNSOLVED_INCOMPLETE,
+    "node-limit": UNSOLVED_INCOMPLETE,
+    "memory-limit": OUT_OF_MEMORY,
+    "time-limit": OUT_OF_TIME,
+}
+
+
+def for_status(status: str) -> int:
+    """The exit code of a search that ended with ``status``."""
+    return _BY_STATUS[status]

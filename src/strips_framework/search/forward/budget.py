@@ -1,0 +1,63 @@
+"""Watching the limits from inside a search loop.
+
+The expansion count and the clock are checked on every expansion (an integer test and a
+clock read, small beside the heuristic calls of an expansion); the resident memory only
+every :data:`CHECK_INTERVAL` expansions, since reading it costs a system call.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import resource
+import time
+
+from strips_framework.search.forward.result import LIMIT_STATUS
+from strips_framework.search.limits import Limits
+
+CHECK_INTERVAL = 256
+_PAGE_MIB = os.sysconf("SC_PAGE_SIZE") / 2**20 if hasattr(os, "sysconf") else 4 / 1024
+
+
+def resident_mib() -> float:
+    """The process's current resident set in MiB (the peak where /proc is missing)."""
+    try:
+        with open("/proc/self/statm", "rb") as statm:
+            return int(statm.read().split()[1]) * _PAGE_MIB
+    except OSError:
+        return peak_mib()
+
+
+def peak_mib() -> float:
+    """The process's peak resident set in MiB (Linux reports KiB)."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+class LimitReached(Exception):
+    """Raised inside a search when a limit ends it; ``key`` is the ``[limits]`` key."""
+
+    def __init__(self, key: str) -> None:
+        super().__init__(key)
+        self.key = key
+        self.status = LIMIT_STATUS[key]
+
+
+class Budget:
+    """The limits of one search, with the time counted from ``started`` (a
+    :func:`time.perf_counter` value: the start of the whole run, so reading and grounding
+    use up the same allowance)."""
+
+    def __init__(self, limits: Limits, started: float) -> None:
+        self.deadline = started + limits.time
+        self.max_expansions = limits.expansions if limits.expansions is not None else math.inf
+        self.memory = limits.memory
+
+    def check(self, expanded: int) -> None:
+        """Raise :class:`LimitReached` when a limit is exceeded after ``expanded``."""
+        if expanded >= self.max_expansions:
+            raise LimitReached("expansions")
+        if time.perf_counter() > self.deadline:
+            raise LimitReached("time")
+        memory = self.memory
+        if memory is not None and expanded % CHECK_INTERVAL == 0 and resident_mib() > memory:
+            raise LimitReached("memory")

@@ -1,0 +1,49 @@
+"""Successor generation: which operators apply in a state, and what they make of it.
+
+Testing every operator in every state costs time in proportion to the whole task. Instead
+each operator is filed under one of its precondition facts, its *key*: the one the fewest
+other operators need, so that the buckets stay small. A state looks only into the
+buckets of the key facts it holds (walking its set bits, lowest first) and tests the
+full preconditions of the operators there. Operators without positive preconditions are
+tested in every state. The order is deterministic: by key fact, then operator number.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+
+from strips_framework.grounding.task import GroundTask
+
+
+class SuccessorGenerator:
+    def __init__(self, task: GroundTask) -> None:
+        operators = task.operators
+        needed_by = Counter(fact for op in operators for fact in op.pre)
+        buckets: dict[int, list[tuple[int, int, int]]] = {}
+        unkeyed: list[tuple[int, int, int]] = []
+        for index, op in enumerate(operators):
+            entry = (index, op.pre_mask, op.pre_neg_mask)
+            if op.pre:
+                key = min(op.pre, key=lambda fact: (needed_by[fact], fact))
+                buckets.setdefault(1 << key, []).append(entry)
+            else:
+                unkeyed.append(entry)
+        self._buckets = {bit: tuple(entries) for bit, entries in buckets.items()}
+        self._key_mask = sum(self._buckets)
+        self._unkeyed = tuple(unkeyed)
+        #: Per operator: the mask of facts it keeps (all but its deletes), and its adds.
+        self.keep = tuple(~op.delete_mask for op in operators)
+        self.add = tuple(op.add_mask for op in operators)
+
+    def applicable(self, state: int) -> list[int]:
+        """The numbers of the operators applicable in ``state``."""
+        found = [i for i, pre, neg in self._unkeyed if state & pre == pre and not state & neg]
+        buckets = self._buckets
+        keys = state & self._key_mask
+        while keys:
+            bit = keys & -keys
+            for i, pre, neg in buckets[bit]:
+                if state & pre == pre and not state & neg:
+                    found.append(i)
+            keys ^= bit
+        return found
