@@ -21,7 +21,7 @@ from strips_framework.grounding.normalize import Clause, Normalizer
 from strips_framework.grounding.reachability import Args, Binding, FactIndex, Reachability, Rule
 from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask
 from strips_framework.pddl.formulas import Atom, Parameter
-from strips_framework.pddl.task import Action, PddlTask
+from strips_framework.pddl.task import Action, PddlTask, missing_cost
 
 #: The derived fact that stands for a goal which is not a conjunction of atoms.
 GOAL = "@goal"
@@ -67,6 +67,7 @@ class _Grounder:
         self.sources: list[_Source] = []
         self.rules: list[Rule] = []
         self.goal_atoms: tuple[Atom, ...] | None = None
+        self.numeric = dict(task.problem.numeric)
 
     def ground(self) -> GroundTask:
         normalizer = Normalizer(self.task)
@@ -224,15 +225,9 @@ class _Grounder:
         if isinstance(action.cost, int):
             return action.cost
         term = Atom(action.cost.predicate, _args(action.cost, binding))
-        for known, value in self.task.problem.numeric:
-            if known == term:
-                return value
-        raise InputError(
-            self.task.problem_path,
-            None,
-            None,
-            f"no initial value for {term}, the cost of action {action.name!r}",
-        )
+        if term not in self.numeric:
+            raise missing_cost(self.task, term, action)
+        return self.numeric[term]
 
     def _strata(self) -> dict[str, int]:
         """A stratum for every derived predicate: at least that of the derived predicates

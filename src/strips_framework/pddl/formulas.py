@@ -69,3 +69,23 @@ TRUE = And(())
 def substitute(args: tuple[str, ...], binding: dict[str, str]) -> tuple[str, ...]:
     """``args`` with every bound variable replaced by its value."""
     return tuple(binding.get(arg, arg) for arg in args)
+
+
+def show(formula: Formula) -> str:
+    """PDDL text of ``formula``, for messages."""
+    if isinstance(formula, Atom):
+        return str(formula)
+    if isinstance(formula, Not):
+        return f"(not {show(formula.part)})"
+    if isinstance(formula, And | Or):
+        word = "and" if isinstance(formula, And) else "or"
+        return "(" + " ".join((word, *map(show, formula.parts))) + ")"
+    if isinstance(formula, Imply):
+        return f"(imply {show(formula.condition)} {show(formula.consequence)})"
+    word = "exists" if isinstance(formula, Exists) else "forall"
+    params = " ".join(f"{p.name} - {_show_types(p.types)}" for p in formula.params)
+    return f"({word} ({params}) {show(formula.body)})"
+
+
+def _show_types(types: tuple[str, ...]) -> str:
+    return types[0] if len(types) == 1 else "(either " + " ".join(types) + ")"

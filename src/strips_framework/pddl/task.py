@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from attrs import field, frozen
 
+from strips_framework.errors import InputError
 from strips_framework.pddl.formulas import Atom, Formula, Parameter
 
 #: An action's cost: a number, or a numeric function term whose value the problem's init gives.
@@ -115,3 +116,10 @@ class PddlTask:
     @property
     def name(self) -> str:
         return self.problem.name
+
+
+def missing_cost(task: PddlTask, term: Atom, action: Action) -> InputError:
+    """The error for an action cost term the problem gives no value."""
+    return InputError(
+        task.problem_path, None, None, f"no initial value for {term}, the cost of {action.name!r}"
+    )
