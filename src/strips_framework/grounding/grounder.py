@@ -122,7 +122,7 @@ class _Grounder:
         names = sorted((fact_name(*fact), fact) for fact in facts)
         number = {fact: i for i, (_, fact) in enumerate(names)}
         operators: set[GroundOperator] = set()
-        axioms: list[GroundAxiom] = []
+        axioms: set[GroundAxiom] = set()
         strata = self._strata()
         for rule_number, (source, rule) in enumerate(zip(self.sources, self.rules)):
             for values in reach.instances[rule_number]:
@@ -133,16 +133,16 @@ class _Grounder:
                     operator = self._operator(source.action, binding, pre, pre_neg, number)
                     if operator is not None:
                         operators.add(operator)
-                elif source.head is not None:
+                elif source.head is not None and not set(pre) & set(pre_neg):
                     head = number[(source.head.predicate, _args(source.head, binding))]
-                    axioms.append(GroundAxiom(head, pre, pre_neg, strata[source.head.predicate]))
+                    axioms.add(GroundAxiom(head, pre, pre_neg, strata[source.head.predicate]))
         ordered = sorted(operators, key=lambda op: (op.name, op.pre, op.pre_neg, op.add, op.delete))
         goal = (
             (number[(GOAL, ())],)
             if self.goal_atoms is None
             else tuple(sorted(number[f] for f in goal_facts))
         )
-        derived = tuple(sorted({axiom.head for axiom in axioms}))
+        derived = tuple(i for i, (_, (pred, _)) in enumerate(names) if pred in self.derived)
         init = 0
         for fact in self.init:
             init |= 1 << number[fact]

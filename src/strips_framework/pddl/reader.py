@@ -170,8 +170,6 @@ def _show(value: object) -> str:
 
 def _sections(reader: _Reader, top: Node, kind: str) -> Iterator[Node]:
     """The ``(:section ...)`` lists after ``(define (kind name) ...)``."""
-    if len(top) < 2 or top[0] != "define":
-        raise reader.error(top, f"expected '(define ({kind} NAME) ...)'")
     for item in top[2:]:
         node = reader.node(item, top, f"a '(:section ...)' of the {kind}")
         if not node or not isinstance(node[0], str) or not node[0].startswith(":"):
@@ -180,8 +178,10 @@ def _sections(reader: _Reader, top: Node, kind: str) -> Iterator[Node]:
 
 
 def _header(reader: _Reader, top: Node, kind: str) -> str:
-    head = reader.node(top[1], top, f"({kind} NAME)") if len(top) > 1 else None
-    if head is None or len(head) != 2 or head[0] != kind:
+    if len(top) < 2 or top[0] != "define":
+        raise reader.error(top, f"expected '(define ({kind} NAME) ...)'")
+    head = reader.node(top[1], top, f"({kind} NAME)")
+    if len(head) != 2 or head[0] != kind:
         raise reader.error(top, f"expected '({kind} NAME)' after 'define'")
     return reader.name(head[1], head, f"the {kind} name")
 

@@ -56,10 +56,13 @@ def read_plan(text: str) -> list[str]:
 
 def validate_plan(task: PddlTask, steps: Sequence[str]) -> PlanCheck:
     """Replay ``steps`` from the initial state and check the goal."""
-    return _Validator(task).check(steps)
+    return PlanValidator(task).check(steps)
 
 
-class _Validator:
+class PlanValidator:
+    """PDDL semantics on the lifted task: states are sets of ground atoms without the
+    derived ones, which :meth:`closure` adds."""
+
     def __init__(self, task: PddlTask) -> None:
         self.task = task
         self.actions = {action.name: action for action in task.domain.actions}
@@ -67,20 +70,29 @@ class _Validator:
         self.strata = _strata(task)
         self.numeric = dict(task.problem.numeric)
 
-    def check(self, steps: Sequence[str]) -> PlanCheck:
-        state: State = frozenset(
+    def initial(self) -> State:
+        return frozenset(
             (atom.predicate, atom.args)
-            for atom in (*self.task.problem.init,)
+            for atom in self.task.problem.init
             if atom.predicate not in self.derived
         )
+
+    def successor(self, state: State, action: Action, binding: dict[str, str]) -> State:
+        """The state after ``action``: deletes first, then adds."""
+        deleted = {(atom.predicate, substitute(atom.args, binding)) for atom in action.delete}
+        added = {(atom.predicate, substitute(atom.args, binding)) for atom in action.add}
+        return frozenset((state - deleted) | added)
+
+    def check(self, steps: Sequence[str]) -> PlanCheck:
+        state = self.initial()
         cost = 0
         for number, text in enumerate(steps, start=1):
-            parsed = self._step(text)
+            parsed = self.step(text)
             if isinstance(parsed, str):
                 return PlanCheck(False, f"step {number} {text}: {parsed}", cost)
             action, binding = parsed
-            model = self._closure(state)
-            if not self._holds(action.precondition, binding, model):
+            model = self.closure(state)
+            if not self.holds(action.precondition, binding, model):
                 reason = self._why_not(action.precondition, binding, model)
                 shown = ", ".join(f"{name} = {value}" for name, value in binding.items())
                 where = f" with {shown}" if shown else ""
@@ -90,13 +102,11 @@ class _Validator:
                     f"satisfied{where}: {reason}",
                     cost,
                 )
-            deleted = {(atom.predicate, substitute(atom.args, binding)) for atom in action.delete}
-            added = {(atom.predicate, substitute(atom.args, binding)) for atom in action.add}
-            state = frozenset((state - deleted) | added)
+            state = self.successor(state, action, binding)
             cost += self._cost(action, binding)
-        model = self._closure(state)
+        model = self.closure(state)
         goal = self.task.problem.goal
-        if not self._holds(goal, {}, model):
+        if not self.holds(goal, {}, model):
             return PlanCheck(
                 False,
                 f"goal not reached after {len(steps)} steps: {self._why_not(goal, {}, model)}",
@@ -105,7 +115,7 @@ class _Validator:
         kind = "general cost" if self.task.problem.minimize_cost else "unit cost"
         return PlanCheck(True, f"plan valid: {len(steps)} steps, cost {cost} ({kind})", cost)
 
-    def _step(self, text: str) -> tuple[Action, dict[str, str]] | str:
+    def step(self, text: str) -> tuple[Action, dict[str, str]] | str:
         """The action and binding of ``(name arg ...)``, or what is wrong with it."""
         words = re.sub(r"[()]", " ", text.lower()).split()
         if not words or not re.fullmatch(r"\s*\([^()]*\)\s*", text):
@@ -135,7 +145,7 @@ class _Validator:
             raise missing_cost(self.task, term, action)
         return self.numeric[term]
 
-    def _closure(self, state: State) -> State:
+    def closure(self, state: State) -> State:
         """``state`` with the derived atoms added, stratum by stratum."""
         if not self.derived:
             return state
@@ -149,7 +159,7 @@ class _Validator:
                     for values in self._bindings(rule.params):
                         binding = dict(zip(names, values))
                         head = (rule.head.predicate, substitute(rule.head.args, binding))
-                        if head not in model and self._holds(rule.body, binding, model):
+                        if head not in model and self.holds(rule.body, binding, model):
                             model.add(head)
                             changed = True
         return frozenset(model)
@@ -157,7 +167,7 @@ class _Validator:
     def _bindings(self, params: tuple[Parameter, ...]) -> Iterator[tuple[str, ...]]:
         return product(*(self.task.objects_of(param.types) for param in params))
 
-    def _holds(
+    def holds(
         self, formula: Formula, binding: dict[str, str], model: State | set[GroundAtom]
     ) -> bool:
         if isinstance(formula, Atom):
@@ -166,18 +176,18 @@ class _Validator:
                 return args[0] == args[1]
             return (formula.predicate, args) in model
         if isinstance(formula, Not):
-            return not self._holds(formula.part, binding, model)
+            return not self.holds(formula.part, binding, model)
         if isinstance(formula, And):
-            return all(self._holds(part, binding, model) for part in formula.parts)
+            return all(self.holds(part, binding, model) for part in formula.parts)
         if isinstance(formula, Or):
-            return any(self._holds(part, binding, model) for part in formula.parts)
+            return any(self.holds(part, binding, model) for part in formula.parts)
         if isinstance(formula, Imply):
-            return not self._holds(formula.condition, binding, model) or self._holds(
+            return not self.holds(formula.condition, binding, model) or self.holds(
                 formula.consequence, binding, model
             )
         names = [param.name for param in formula.params]
         results = (
-            self._holds(formula.body, {**binding, **dict(zip(names, values))}, model)
+            self.holds(formula.body, {**binding, **dict(zip(names, values))}, model)
             for values in self._bindings(formula.params)
         )
         return any(results) if isinstance(formula, Exists) else all(results)
@@ -186,8 +196,10 @@ class _Validator:
         """The first conjunct of ``formula`` that is false, shown ground where possible."""
         if isinstance(formula, And):
             for part in formula.parts:
-                if not self._holds(part, binding, model):
+                if not self.holds(part, binding, model):
                     return self._why_not(part, binding, model)
+        if isinstance(formula, Imply):
+            return self._why_not(formula.consequence, binding, model)
         if isinstance(formula, Atom):
             return f"{Atom(formula.predicate, substitute(formula.args, binding))} is false"
         if isinstance(formula, Not) and isinstance(formula.part, Atom):
@@ -197,7 +209,7 @@ class _Validator:
             names = [param.name for param in formula.params]
             for values in self._bindings(formula.params):
                 inner = {**binding, **dict(zip(names, values))}
-                if not self._holds(formula.body, inner, model):
+                if not self.holds(formula.body, inner, model):
                     shown = ", ".join(f"{n} = {v}" for n, v in zip(names, values))
                     return f"{self._why_not(formula.body, inner, model)} (for {shown})"
         return f"{show(formula)} is false"

@@ -1,0 +1,5 @@
+(define (problem blocks-3)
+  (:domain BLOCKS)
+  (:objects a b c - block)
+  (:INIT (CLEAR a) (ON a b) (ONTABLE b) (CLEAR c) (ONTABLE c) (HANDEMPTY))
+  (:goal (AND (ON b c))))
