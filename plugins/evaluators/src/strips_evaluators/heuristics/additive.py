@@ -23,40 +23,51 @@ IN_STATE = -1
 def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float], list[int]]:
     """Fact costs and best supporters under hadd, by a generalized Dijkstra from ``state``.
 
-    A fact's cost is final when it leaves the queue, so the exploration stops once every
-    goal fact has left it; costs of facts not yet settled then are upper bounds, and
+    A fact's cost is final when its bucket is taken, so the exploration stops once every
+    goal fact has been taken; costs of facts not yet settled then are upper bounds, and
     unreached facts cost ``math.inf``. ``supporter[f]`` is the relaxed operator that gave
     ``f`` its cost (the first to reach the minimum), :data:`IN_STATE` for state facts.
+
+    The queue is a dict of buckets (one list of facts per cost) with a heap of the costs
+    that have a bucket: most pushes are a list append, and the heap only sees each
+    distinct cost once. A bucket that grows while it is taken (a zero-cost operator)
+    simply comes back as a new bucket of the same cost.
     """
-    shift = relaxed.key_shift
-    mask = (1 << shift) - 1
     pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
-    queue, cost = start_exploration(relaxed, state)
+    start, cost = start_exploration(relaxed, state)
     supporter = [IN_STATE] * relaxed.num_facts
-    remaining = relaxed.pre_count[:]
-    value = relaxed.cost[:]
+    accumulator = relaxed.accumulator[:]
+    bits = relaxed.count_bits
+    left_mask = (1 << bits) - 1
+    buckets = {0: start}
+    levels = [0]
     goals_left = len(relaxed.goal)
-    while queue:
-        key = heappop(queue)
-        fact_cost = key >> shift
-        fact = key & mask
-        if fact_cost > cost[fact]:
-            continue
-        if is_goal[fact]:
-            goals_left -= 1
-            if not goals_left:
-                break
-        for op in pre_of[fact]:
-            value[op] += fact_cost
-            left = remaining[op] - 1
-            remaining[op] = left
-            if not left:
-                op_value = value[op]
-                for effect in add[op]:
-                    if op_value < cost[effect]:
-                        cost[effect] = op_value
-                        supporter[effect] = op
-                        heappush(queue, op_value << shift | effect)
+    while levels:
+        level = heappop(levels)
+        # Adds the fact's cost and counts one precondition off, in one step.
+        increment = (level << bits) - 1
+        for fact in buckets.pop(level):
+            if cost[fact] != level:
+                continue  # reached more cheaply after it was put in this bucket
+            if is_goal[fact]:
+                goals_left -= 1
+                if not goals_left:
+                    return cost, supporter
+            for op in pre_of[fact]:
+                packed = accumulator[op] + increment
+                accumulator[op] = packed
+                if not packed & left_mask:
+                    value = packed >> bits
+                    for effect in add[op]:
+                        if value < cost[effect]:
+                            cost[effect] = value
+                            supporter[effect] = op
+                            bucket = buckets.get(value)
+                            if bucket is None:
+                                buckets[value] = [effect]
+                                heappush(levels, value)
+                            else:
+                                bucket.append(effect)
     return cost, supporter
 
 

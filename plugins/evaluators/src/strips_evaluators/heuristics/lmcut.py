@@ -56,14 +56,23 @@ class LMCutEstimator:
         hmax = max_exploration(relaxed, state, op_cost, supporter, supporter_cost)
         if hmax[goal_fact] == math.inf:
             return math.inf
+        # The justification graph's edges out of each fact: the operators it supports.
+        # Entries go stale when an operator changes supporter; users check supporter[op].
+        supported: list[list[int]] = [[] for _ in range(relaxed.num_facts)]
+        for op, fact in enumerate(supporter):
+            if fact != NO_SUPPORTER:
+                supported[fact].append(op)
+        start = facts_in(state)
+        start.append(relaxed.true_fact)
         total = 0
         while hmax[goal_fact]:
-            cut = self._cut(state, self._goal_zone(op_cost, supporter), supporter)
+            goal_zone = self._goal_zone(op_cost, supporter)
+            cut = self._cut(start, goal_zone, supporter, supported)
             cut_cost = min(op_cost[op] for op in cut)
             total += cut_cost
             for op in cut:
                 op_cost[op] -= cut_cost
-            self._lower_hmax(cut, hmax, op_cost, supporter, supporter_cost)
+            self._lower_hmax(cut, hmax, op_cost, supporter, supporter_cost, supported)
         return total
 
     def _goal_zone(self, op_cost: list[int], supporter: list[int]) -> bytearray:
@@ -81,20 +90,24 @@ class LMCutEstimator:
                     stack.append(supporter[op])
         return zone
 
-    def _cut(self, state: int, goal_zone: bytearray, supporter: list[int]) -> list[int]:
-        """The operators whose supporter is reachable from ``state`` in the justification
+    def _cut(
+        self,
+        start: list[int],
+        goal_zone: bytearray,
+        supporter: list[int],
+        supported: list[list[int]],
+    ) -> list[int]:
+        """The operators whose supporter is reachable from ``start`` in the justification
         graph without entering the goal zone, and that add a goal-zone fact."""
-        relaxed = self.relaxed
-        add, pre_of = relaxed.add, relaxed.pre_of
+        add = self.relaxed.add
         cut = []
-        seen = bytearray(relaxed.num_facts)
-        stack = facts_in(state)
-        stack.append(relaxed.true_fact)
+        seen = bytearray(self.relaxed.num_facts)
+        stack = start[:]
         for fact in stack:
             seen[fact] = 1
         while stack:
             fact = stack.pop()
-            for op in pre_of[fact]:
+            for op in supported[fact]:
                 if supporter[op] != fact:
                     continue
                 effects = add[op]
@@ -116,6 +129,7 @@ class LMCutEstimator:
         op_cost: list[int],
         supporter: list[int],
         supporter_cost: list[int],
+        supported: list[list[int]],
     ) -> None:
         """Propagate the decreases the cheaper ``cut`` operators cause: only operators whose
         supporter got cheaper can get cheaper, and then they may take a new supporter."""
@@ -144,7 +158,9 @@ class LMCutEstimator:
                     if hmax[condition] > best_cost:
                         best, best_cost = condition, hmax[condition]
                 old_cost = supporter_cost[op]
-                supporter[op] = best
+                if best != fact:
+                    supporter[op] = best
+                    supported[best].append(op)
                 supporter_cost[op] = best_cost
                 if best_cost != old_cost:
                     reached = best_cost + op_cost[op]

@@ -46,6 +46,11 @@ class RelaxedTask:
     unit_cost: bool
     #: Priority-queue keys are ``cost << key_shift | fact``: one int, compared in C.
     key_shift: int
+    #: hadd's per-operator accumulator, initial values: the cost so far in the high bits
+    #: (the operator's own cost to start with), preconditions left in the low
+    #: ``count_bits`` bits. One add per reached precondition updates both.
+    accumulator: list[int]
+    count_bits: int
 
 
 def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
@@ -72,6 +77,8 @@ def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
     for op, facts in enumerate(pre):
         for fact in facts:
             pre_of[fact].append(op)
+    pre_count = [len(facts) for facts in pre]
+    count_bits = max(pre_count, default=0).bit_length() + 1
     goal = _unique(task.goal)
     is_goal = [False] * num_facts
     for fact in goal:
@@ -82,13 +89,15 @@ def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
         add=add,
         cost=cost,
         operator=operator,
-        pre_count=[len(facts) for facts in pre],
+        pre_count=pre_count,
         pre_of=pre_of,
         true_fact=true_fact,
         goal=goal,
         is_goal=is_goal,
         unit_cost=all(c == 1 for c, o in zip(cost, operator) if o != AXIOM),
         key_shift=max(num_facts, 1).bit_length(),
+        accumulator=[c << count_bits | n for c, n in zip(cost, pre_count)],
+        count_bits=count_bits,
     )
 
 
