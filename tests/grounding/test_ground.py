@@ -1,0 +1,139 @@
+"""Grounding: static pruning, normalization, costs, goals and axioms on small tasks."""
+
+from __future__ import annotations
+
+from strips_framework.grounding import ground
+from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.grounding.task import GroundTask
+
+
+def names(task: GroundTask, facts: tuple[int, ...]) -> list[str]:
+    return [task.facts[fact] for fact in facts]
+
+
+def operator(task: GroundTask, name: str):
+    (found,) = [op for op in task.operators if op.name == name]
+    return found
+
+
+def test_blocks_facts_and_operators_are_sorted(load):
+    task = ground(load("blocks-domain.pddl", "blocks-3.pddl"))
+    assert list(task.facts) == sorted(task.facts)
+    assert [op.name for op in task.operators] == sorted(op.name for op in task.operators)
+    assert len(task.operators) == 3 + 3 + 9 + 9
+    assert names(task, task.goal) == ["(on b c)"]
+    assert task.facts_of(task.init) == [
+        "(clear a)",
+        "(clear c)",
+        "(handempty)",
+        "(on a b)",
+        "(ontable b)",
+        "(ontable c)",
+    ]
+    assert not task.uses_costs and {op.cost for op in task.operators} == {1}
+
+
+def test_static_facts_are_pruned_and_checked(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    assert not [fact for fact in task.facts if fact.startswith(("(door", "(fits"))]
+    # (door r1 r2) does not exist, so there is no such move.
+    assert not [op for op in task.operators if op.name == "(move r1 r2)"]
+    move = operator(task, "(move hall1 r1)")
+    assert names(task, move.pre) == ["(at hall1)"]
+
+
+def test_equality_and_negative_preconditions(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    assert not [op for op in task.operators if op.name == "(move hall1 hall1)"]
+    move = operator(task, "(move hall1 r2)")
+    assert names(task, move.pre_neg) == ["(locked hall1 r2)"]
+    assert not move.applicable(task.init)
+
+
+def test_either_types_and_the_type_hierarchy(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    drops = [op.name for op in task.operators if op.name.startswith("(drop")]
+    assert drops == ["(drop k1 hall1)", "(drop k1 r1)", "(drop k1 r2)"]
+
+
+def test_disjunctions_split_operators_under_one_name(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    cleans = [op for op in task.operators if op.name == "(clean r1)"]
+    # imply (visited r1) -> forall k: not key-at: either r1 not visited or no key in r1.
+    assert sorted(names(task, op.pre_neg) for op in cleans) == [
+        ["(key-at k1 r1)"],
+        ["(visited r1)"],
+    ]
+
+
+def test_exists_becomes_extra_variables(write_task):
+    task = ground(
+        write_task(
+            """(define (domain d) (:predicates (p ?x) (q ?x) (done))
+           (:action a :parameters () :precondition (exists (?x) (and (p ?x) (q ?x)))
+              :effect (done)))""",
+            """(define (problem p) (:domain d) (:objects o1 o2 o3)
+           (:init (p o1) (p o2) (q o2) (q o3)) (:goal (done)))""",
+        )
+    )
+    # Only o2 satisfies both static atoms: one operator, no precondition left.
+    (only,) = task.operators
+    assert only.name == "(a)" and only.pre == ()
+
+
+def test_action_costs(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    assert task.uses_costs
+    costs = {op.name: op.cost for op in task.operators}
+    assert costs["(move hall1 r2)"] == 5 and costs["(move r1 hall1)"] == 3
+    assert costs["(pick k1 r1)"] == 1 and costs["(unlock hall1 r2 k1)"] == 2
+    assert costs["(clean r1)"] == 0  # no cost effect under a cost metric
+
+
+def test_costs_without_metric_are_unit(load):
+    task = ground(load("rooms-domain.pddl", "rooms-2.pddl"))
+    assert not task.uses_costs and {op.cost for op in task.operators} == {1}
+
+
+def test_derived_predicates_become_stratified_axioms(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    assert names(task, task.derived) == ["(reachable hall1)", "(reachable r1)", "(reachable r2)"]
+    assert {axiom.stratum for axiom in task.axioms} == {0}
+    assert "(reachable r1)" in task.facts_of(task.init)
+    assert "(reachable r2)" not in task.facts_of(task.init)
+    evaluator = AxiomEvaluator(task)
+    unlocked = task.init & ~operator(task, "(unlock hall1 r2 k1)").delete_mask
+    assert "(reachable r2)" in task.facts_of(evaluator.evaluate(unlocked))
+
+
+def test_complex_goal_becomes_a_derived_fact_in_a_higher_stratum(load):
+    task = ground(load("rooms-domain.pddl", "rooms-2.pddl"))
+    assert names(task, task.goal) == ["(@goal)"]
+    goal_axioms = [axiom for axiom in task.axioms if task.facts[axiom.head] == "(@goal)"]
+    assert goal_axioms and {axiom.stratum for axiom in goal_axioms} == {1}
+    assert not task.is_goal(task.init)
+
+
+def test_axiom_evaluator_is_a_no_op_without_axioms(load):
+    task = ground(load("blocks-domain.pddl", "blocks-3.pddl"))
+    assert AxiomEvaluator(task).evaluate(task.init) == task.init
+
+
+def test_axiom_evaluator_clears_stale_derived_facts(load):
+    task = ground(load("rooms-domain.pddl", "rooms-1.pddl"))
+    reachable_r2 = task.facts.index("(reachable r2)")
+    stale = task.init | 1 << reachable_r2
+    assert AxiomEvaluator(task).evaluate(stale) == task.init
+
+
+def test_unreachable_goal_keeps_a_fact_nothing_adds(write_task):
+    task = ground(
+        write_task(
+            """(define (domain d) (:predicates (p ?x) (q ?x))
+           (:action a :parameters (?x) :precondition (p ?x) :effect (p ?x)))""",
+            """(define (problem p) (:domain d) (:objects o) (:init (p o)) (:goal (q o)))""",
+        )
+    )
+    (goal,) = task.goal
+    assert task.facts[goal] == "(q o)"
+    assert not any(goal in op.add for op in task.operators)
