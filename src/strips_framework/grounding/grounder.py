@@ -13,12 +13,15 @@ Determinism: facts are numbered in the order of their names and operators sorted
 
 from __future__ import annotations
 
-from attrs import frozen
+from collections.abc import Callable
+from operator import itemgetter
+
+from attrs import evolve, frozen
 
 from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.normalize import Clause, Normalizer
-from strips_framework.grounding.reachability import Args, Binding, FactIndex, Reachability, Rule
+from strips_framework.grounding.reachability import Args, FactIndex, Reachability, Rule, Slots
 from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask
 from strips_framework.pddl.formulas import Atom, Parameter
 from strips_framework.pddl.task import Action, PddlTask, missing_cost
@@ -27,6 +30,9 @@ from strips_framework.pddl.task import Action, PddlTask, missing_cost
 GOAL = "@goal"
 
 Fact = tuple[str, Args]
+#: An atom compiled against a rule's slots: the fact numbers of its predicate by
+#: arguments, and the function that picks its arguments from an instance's slot values.
+Pattern = tuple[dict[Args, int], Callable[[Args], Args]]
 
 
 @frozen
@@ -86,7 +92,8 @@ class _Grounder:
             head = Atom(GOAL, ())
             for clause in goal_clauses:
                 self._add_rule(_Source(clause, head=head), (), (head,))
-        reach = Reachability(self.rules, self.static, self._check)
+        objects = frozenset(self.task.objects_of(("object",)))
+        reach = Reachability(self.rules, self.static, objects)
         reach.run(self.init)
         return self._task(reach)
 
@@ -95,6 +102,12 @@ class _Grounder:
     ) -> None:
         clause = source.clause
         everything = params + clause.params
+        action = source.action
+        mentions = clause.negative
+        if action is not None:
+            mentions += action.delete
+            if isinstance(action.cost, Atom):
+                mentions += (action.cost,)
         self.sources.append(source)
         self.rules.append(
             Rule(
@@ -102,18 +115,12 @@ class _Grounder:
                 domains=tuple(frozenset(self.task.objects_of(param.types)) for param in everything),
                 body=tuple(atom for atom in clause.positive if atom.predicate != "="),
                 heads=heads,
+                absent=tuple(atom for atom in clause.negative if atom.predicate in self.static),
                 equal=tuple(_pair(atom) for atom in clause.positive if atom.predicate == "="),
                 unequal=tuple(_pair(atom) for atom in clause.negative if atom.predicate == "="),
+                mentions=mentions,
             )
         )
-
-    def _check(self, number: int, binding: Binding) -> bool:
-        """Static negative literals: the fact must be absent from the initial state."""
-        for atom in self.sources[number].clause.negative:
-            facts = self.static.get(atom.predicate)
-            if facts is not None and _args(atom, binding) in facts.all:
-                return False
-        return True
 
     def _task(self, reach: Reachability) -> GroundTask:
         facts: set[Fact] = {(pred, args) for pred, known in reach.reached.items() for args in known}
@@ -121,51 +128,36 @@ class _Grounder:
         facts.update(goal_facts)
         names = sorted((fact_name(*fact), fact) for fact in facts)
         number = {fact: i for i, (_, fact) in enumerate(names)}
+        by_predicate: dict[str, dict[Args, int]] = {}
+        for (predicate, args), i in number.items():
+            by_predicate.setdefault(predicate, {})[args] = i
         operators: set[GroundOperator] = set()
         axioms: set[GroundAxiom] = set()
         strata = self._strata()
-        for rule_number, (source, rule) in enumerate(zip(self.sources, self.rules)):
-            for values in reach.instances[rule_number]:
-                binding = dict(zip(rule.params, values))
-                pre = self._literals(source.clause.positive, binding, number)
-                pre_neg = self._literals(source.clause.negative, binding, number)
-                if source.action is not None:
-                    operator = self._operator(source.action, binding, pre, pre_neg, number)
-                    if operator is not None:
-                        operators.add(operator)
-                elif source.head is not None and not set(pre) & set(pre_neg):
-                    head = number[(source.head.predicate, _args(source.head, binding))]
-                    axioms.add(GroundAxiom(head, pre, pre_neg, strata[source.head.predicate]))
-        ordered = sorted(operators, key=lambda op: (op.name, op.pre, op.pre_neg, op.add, op.delete))
+        for source, slots, instances in zip(self.sources, reach.slots, reach.instances):
+            builder = _Builder(self, source, slots, by_predicate)
+            if source.action is not None:
+                operators.update(builder.operators(instances))
+            elif source.head is not None:
+                axioms.update(builder.axioms(instances, strata[source.head.predicate]))
         goal = (
             (number[(GOAL, ())],)
             if self.goal_atoms is None
             else tuple(sorted(number[f] for f in goal_facts))
         )
-        derived = tuple(i for i, (_, (pred, _)) in enumerate(names) if pred in self.derived)
-        init = 0
-        for fact in self.init:
-            init |= 1 << number[fact]
         task = GroundTask(
             name=self.task.name,
             facts=tuple(name for name, _ in names),
-            operators=tuple(ordered),
-            init=init,
+            operators=tuple(
+                sorted(operators, key=lambda op: (op.name, op.pre, op.pre_neg, op.add, op.delete))
+            ),
+            init=sum(1 << number[fact] for fact in set(self.init)),
             goal=goal,
             axioms=tuple(sorted(axioms, key=lambda a: (a.stratum, a.head, a.body, a.body_neg))),
-            derived=derived,
+            derived=tuple(i for i, (_, (pred, _)) in enumerate(names) if pred in self.derived),
             uses_costs=self.task.problem.minimize_cost,
         )
-        return GroundTask(
-            name=task.name,
-            facts=task.facts,
-            operators=task.operators,
-            init=AxiomEvaluator(task).evaluate(init),
-            goal=task.goal,
-            axioms=task.axioms,
-            derived=task.derived,
-            uses_costs=task.uses_costs,
-        )
+        return evolve(task, init=AxiomEvaluator(task).evaluate(task.init))
 
     def _goal_facts(self) -> set[Fact]:
         """The goal's atoms, static ones that hold left out. A goal fact nothing reaches
@@ -179,52 +171,15 @@ class _Grounder:
                 result.add((atom.predicate, atom.args))
         return result
 
-    def _literals(
-        self, atoms: tuple[Atom, ...], binding: Binding, number: dict[Fact, int]
-    ) -> tuple[int, ...]:
-        """The fact numbers of the non-static atoms; an atom without a number is never
-        reached, which only negative literals can meet (and then they hold)."""
-        result = set()
-        for atom in atoms:
-            if atom.predicate == "=" or atom.predicate in self.static:
-                continue
-            fact = number.get((atom.predicate, _args(atom, binding)))
-            if fact is not None:
-                result.add(fact)
-        return tuple(sorted(result))
-
-    def _operator(
-        self,
-        action: Action,
-        binding: Binding,
-        pre: tuple[int, ...],
-        pre_neg: tuple[int, ...],
-        number: dict[Fact, int],
-    ) -> GroundOperator | None:
-        if set(pre) & set(pre_neg):
-            return None
-        add = {number[(atom.predicate, _args(atom, binding))] for atom in action.add}
-        delete = {
-            fact
-            for atom in action.delete
-            if (fact := number.get((atom.predicate, _args(atom, binding)))) is not None
-        }
-        args = tuple(binding[param.name] for param in action.params)
-        return GroundOperator(
-            name=fact_name(action.name, args),
-            pre=pre,
-            add=tuple(sorted(add)),
-            delete=tuple(sorted(delete - add)),
-            cost=self._cost(action, binding) if self.task.problem.minimize_cost else 1,
-            pre_neg=pre_neg,
-        )
-
-    def _cost(self, action: Action, binding: Binding) -> int:
+    def cost(self, action: Action, args: Args) -> int:
+        """The cost of ``action`` whose cost term has arguments ``args``."""
+        if not self.task.problem.minimize_cost:
+            return 1
         if action.cost is None:
             return 0
         if isinstance(action.cost, int):
             return action.cost
-        term = Atom(action.cost.predicate, _args(action.cost, binding))
+        term = Atom(action.cost.predicate, args)
         if term not in self.numeric:
             raise missing_cost(self.task, term, action)
         return self.numeric[term]
@@ -256,9 +211,101 @@ class _Grounder:
         return level
 
 
+class _Builder:
+    """Turns the instances of one rule into ground operators or axioms. Atoms are
+    compiled once to a lookup of their predicate's fact numbers and a function picking
+    their arguments from an instance's slot values (its parameter values followed by the
+    rule's constants)."""
+
+    def __init__(
+        self,
+        grounder: _Grounder,
+        source: _Source,
+        slots: Slots,
+        numbers: dict[str, dict[Args, int]],
+    ) -> None:
+        self.grounder = grounder
+        self.source = source
+        self.constants = tuple(value for value in slots.template if value is not None)
+        static = grounder.static
+
+        def patterns(atoms: tuple[Atom, ...]) -> tuple[Pattern, ...]:
+            return tuple(
+                (numbers.get(atom.predicate, {}), _picker(slots.of(atom.args)))
+                for atom in atoms
+                if atom.predicate != "=" and atom.predicate not in static
+            )
+
+        self.pre = patterns(source.clause.positive)
+        self.pre_neg = patterns(source.clause.negative)
+        action = source.action
+        if action is not None:
+            self.add = patterns(action.add)
+            self.delete = patterns(action.delete)
+            self.arity = len(action.params)
+            cost_args = action.cost.args if isinstance(action.cost, Atom) else ()
+            self.cost_args = _picker(slots.of(cost_args))
+        if source.head is not None:
+            (self.head,) = patterns((source.head,))
+
+    @staticmethod
+    def _facts(patterns: tuple[Pattern, ...], values: Args) -> set[int]:
+        """The numbers of the facts; facts never reached have none and are left out
+        (only negative literals and deletes can name them, and then they change nothing)."""
+        found = set()
+        for facts, pick in patterns:
+            fact = facts.get(pick(values))
+            if fact is not None:
+                found.add(fact)
+        return found
+
+    def operators(self, instances: list[Args]) -> list[GroundOperator]:
+        action = self.source.action
+        assert action is not None
+        result = []
+        for key in instances:
+            values = key + self.constants
+            pre = self._facts(self.pre, values)
+            pre_neg = self._facts(self.pre_neg, values)
+            if pre & pre_neg:
+                continue
+            add = self._facts(self.add, values)
+            cost_args = self.cost_args(values)
+            result.append(
+                GroundOperator(
+                    name=fact_name(action.name, key[: self.arity]),
+                    pre=tuple(sorted(pre)),
+                    add=tuple(sorted(add)),
+                    delete=tuple(sorted(self._facts(self.delete, values) - add)),
+                    cost=self.grounder.cost(action, cost_args),
+                    pre_neg=tuple(sorted(pre_neg)),
+                )
+            )
+        return result
+
+    def axioms(self, instances: list[Args], stratum: int) -> list[GroundAxiom]:
+        facts, pick = self.head
+        result = []
+        for key in instances:
+            values = key + self.constants
+            body = self._facts(self.pre, values)
+            body_neg = self._facts(self.pre_neg, values)
+            if body & body_neg:
+                continue
+            head = facts[pick(values)]
+            result.append(GroundAxiom(head, tuple(sorted(body)), tuple(sorted(body_neg)), stratum))
+        return result
+
+
+def _picker(slots: tuple[int, ...]) -> Callable[[Args], Args]:
+    """A fast function from slot values to the tuple of the values at ``slots``."""
+    if len(slots) > 1:
+        return itemgetter(*slots)
+    if slots:
+        (slot,) = slots
+        return lambda values: (values[slot],)
+    return lambda values: ()
+
+
 def _pair(atom: Atom) -> tuple[str, str]:
     return atom.args[0], atom.args[1]
-
-
-def _args(atom: Atom, binding: Binding) -> Args:
-    return tuple(binding.get(arg, arg) for arg in atom.args)
