@@ -1,8 +1,12 @@
-"""Small ground tasks built by hand, so forward search is tested without a PDDL reader."""
+"""Small ground tasks built by hand, so forward search is tested without a PDDL reader.
+Tests get them through the ``tasks`` fixture: ``tasks["gripper-3"]``, ``tasks.builder()``."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
+from typing import ClassVar
+
+import pytest
 
 from strips_framework.grounding.task import GroundOperator, GroundTask, mask_of
 
@@ -85,3 +89,25 @@ def unsolvable() -> GroundTask:
     b.op("(flop)", ["down"], ["up"], ["down"])
     b.fact("goal")
     return b.task("unsolvable", ["up"], ["goal"])
+
+
+class Tasks:
+    """The tasks above by name (``gripper-N`` for N balls), each built afresh."""
+
+    FACTORIES: ClassVar[dict[str, Callable[[], GroundTask]]] = {
+        "toll-roads": toll_roads, "one-way-trap": one_way_trap, "unsolvable": unsolvable,
+    }
+
+    def __getitem__(self, name: str) -> GroundTask:
+        if name.startswith("gripper-"):
+            return gripper(int(name.removeprefix("gripper-")))
+        return self.FACTORIES[name]()
+
+    @staticmethod
+    def builder() -> TaskBuilder:
+        return TaskBuilder()
+
+
+@pytest.fixture(scope="session")
+def tasks() -> Tasks:
+    return Tasks()
