@@ -15,13 +15,37 @@ INF = math.inf
 
 #: Initial-state value of each heuristic on each task.
 EXPECTED = {
-    "chain": {"blind": 1, "goal-count": 1, "hmax": 3, "hadd": 3, "ff": 3, "lmcut": 3},
-    "fork": {"blind": 1, "goal-count": 1, "hmax": 2, "hadd": 3, "ff": 3, "lmcut": 3},
-    "shared": {"blind": 1, "goal-count": 2, "hmax": 2, "hadd": 4, "ff": 3, "lmcut": 3},
-    "costs": {"blind": 1, "goal-count": 1, "hmax": 3, "hadd": 3, "ff": 3, "lmcut": 3},
-    "axiom": {"blind": 1, "goal-count": 1, "hmax": 2, "hadd": 3, "ff": 2, "lmcut": 2},
-    "negative": {"blind": 1, "goal-count": 1, "hmax": 1, "hadd": 1, "ff": 1, "lmcut": 1},
-    "dead": {"blind": 1, "goal-count": 2, "hmax": INF, "hadd": INF, "ff": INF, "lmcut": INF},
+    "chain": {"blind": 1, "goal-count": 1, "hmax": 3, "hadd": 3, "ff": 3, "lmcut": 3, "lmcount": 3},
+    "fork": {"blind": 1, "goal-count": 1, "hmax": 2, "hadd": 3, "ff": 3, "lmcut": 3, "lmcount": 3},
+    "shared": {
+        "blind": 1,
+        "goal-count": 2,
+        "hmax": 2,
+        "hadd": 4,
+        "ff": 3,
+        "lmcut": 3,
+        "lmcount": 3,
+    },
+    "costs": {"blind": 1, "goal-count": 1, "hmax": 3, "hadd": 3, "ff": 3, "lmcut": 3, "lmcount": 2},
+    "axiom": {"blind": 1, "goal-count": 1, "hmax": 2, "hadd": 3, "ff": 2, "lmcut": 2, "lmcount": 2},
+    "negative": {
+        "blind": 1,
+        "goal-count": 1,
+        "hmax": 1,
+        "hadd": 1,
+        "ff": 1,
+        "lmcut": 1,
+        "lmcount": 1,
+    },
+    "dead": {
+        "blind": 1,
+        "goal-count": 2,
+        "hmax": INF,
+        "hadd": INF,
+        "ff": INF,
+        "lmcut": INF,
+        "lmcount": INF,
+    },
 }
 
 
@@ -68,3 +92,32 @@ def test_ff_does_not_prefer_operators_whose_negative_precondition_fails(small_ta
 def test_ff_on_a_dead_end_prefers_nothing(small_task) -> None:
     task = small_task("dead")
     assert FFHeuristic().for_task(task).estimate_with_preferred(task.init) == (INF, [])
+
+
+HAND = [
+    ("grab1", "free", "held1", "free"),
+    ("place1", "held1", "placed1 free", "held1"),
+    ("grab2", "free", "held2", "free"),
+    ("place2", "held2", "placed2 free", "held2"),
+]
+
+
+def test_lmcount_counts_landmarks_required_again(make_task) -> None:
+    """After grab1, ``free`` was reached (it held initially) but is necessary for held2,
+    which is still to come: it counts again, beside placed1, held2 and placed2."""
+    task = make_task(HAND, init="free", goal="placed1 placed2")
+    estimator = HEURISTICS["lmcount"]().for_task(task)
+    assert estimator.estimate(task.init) == 4  # held1, placed1, held2, placed2
+    after_grab = task.operators[0].apply(task.init)
+    value, preferred = estimator.estimate_with_preferred(after_grab)
+    assert value == 4
+    assert [task.operators[i].name for i in preferred] == ["place1"]
+    after_place = task.operators[1].apply(after_grab)
+    assert estimator.estimate(after_place) == 2  # held2, placed2; placed1 stays accepted
+
+
+def test_lmcount_weighs_landmarks_by_their_cheapest_achiever(small_task) -> None:
+    task = small_task("costs")  # g is a landmark (cheapest achiever costs 2), m is not
+    value, preferred = HEURISTICS["lmcount"]().for_task(task).estimate_with_preferred(task.init)
+    assert value == 2
+    assert [task.operators[i].name for i in preferred] == ["direct"]

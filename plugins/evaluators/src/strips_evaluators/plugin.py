@@ -13,6 +13,7 @@ from strips_evaluators.heuristics.blind import BlindHeuristic
 from strips_evaluators.heuristics.ff import FFHeuristic
 from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
 from strips_evaluators.heuristics.hmax import MaxHeuristic
+from strips_evaluators.heuristics.lmcount import LandmarkCountHeuristic
 from strips_evaluators.heuristics.lmcut import LMCutHeuristic
 from strips_evaluators.paper import PaperEvaluator
 from strips_framework.hookspecs import hookimpl
@@ -35,4 +36,5 @@ def strips_register_heuristics() -> list[type[StateHeuristic]]:
         AdditiveHeuristic,
         FFHeuristic,
         LMCutHeuristic,
+        LandmarkCountHeuristic,
     ]

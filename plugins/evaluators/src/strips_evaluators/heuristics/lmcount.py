@@ -1,0 +1,121 @@
+"""The landmark-count heuristic (Richter, Helmert & Westphal 2008), evaluated per state.
+
+Fast Downward's lmcount follows the search path: a landmark is *accepted* once some state
+on the path made it true. The state-heuristic interface sees one state, so acceptance is
+inferred from the state instead: the landmarks of the initial state and those true in the
+state are accepted, and so is every landmark in the label of a fact true in the state,
+since the labels say which landmarks every path reaches before that fact (Zhu & Givan; see
+:mod:`strips_evaluators.heuristics.landmarks`). That is a subset of what the path would
+accept, so the estimate is at least the path-based one's on the same landmarks.
+
+h = (landmarks not accepted) + (landmarks *required again*: accepted, false in the state,
+and either a goal or necessary for a landmark not accepted yet), each landmark weighing
+the cost of its cheapest achiever (1 on unit-cost tasks). Not admissible: one operator
+can achieve several landmarks.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import ClassVar
+
+from attrs import frozen
+
+from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
+from strips_evaluators.heuristics.relaxation import facts_in, relax
+from strips_framework.grounding.task import GroundTask
+
+
+@frozen
+class LandmarkCountEstimator:
+    graph: LandmarkGraph
+    goal_mask: int
+    #: Facts whose label holds a landmark: the ones worth looking at in a state.
+    informative: int
+    #: Landmarks of the initial state: accepted on every path.
+    initially: int
+    #: Cost of each landmark's cheapest achiever; None on unit-cost tasks (all 1).
+    weight: list[int] | None
+    #: Per relaxed operator: the real operator's index and its applicability masks.
+    operator: list[int]
+    pre_masks: list[int]
+    neg_masks: list[int]
+
+    def estimate(self, state: int) -> float:
+        return self._count(state)[0]
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
+        """Preferred: applicable operators that achieve a landmark that is required again,
+        or not accepted and with its necessary landmarks true in the state."""
+        value, missing, again = self._count(state)
+        if not missing and not again:
+            return value, []
+        graph, operator = self.graph, self.operator
+        pre_masks, neg_masks = self.pre_masks, self.neg_masks
+        necessary = graph.necessary
+        ready = [fact for fact in facts_in(missing) if necessary[fact] & state == necessary[fact]]
+        preferred = {
+            operator[op]
+            for fact in ready + facts_in(again)
+            for op in graph.achievers[fact]
+            if state & pre_masks[op] == pre_masks[op] and not state & neg_masks[op]
+        }
+        return value, sorted(preferred)
+
+    def _count(self, state: int) -> tuple[float, int, int]:
+        """The estimate, the landmarks not accepted and those required again."""
+        graph = self.graph
+        if not graph.solvable:
+            return math.inf, 0, 0
+        if state & self.goal_mask == self.goal_mask:
+            return 0, 0, 0
+        label, landmarks = graph.label, graph.landmarks
+        accepted = self.initially
+        for fact in facts_in(state & self.informative):
+            accepted |= label[fact]
+        missing = landmarks & ~accepted
+        needed = self.goal_mask
+        necessary = graph.necessary
+        for fact in facts_in(missing):
+            needed |= necessary[fact]
+        again = accepted & landmarks & needed & ~state
+        counted = missing | again
+        if self.weight is None:
+            return counted.bit_count(), missing, again
+        weight = self.weight
+        return sum(weight[fact] for fact in facts_in(counted)), missing, again
+
+
+@frozen
+class LandmarkCountHeuristic:
+    """lmcount: the landmarks (Zhu & Givan, from the initial state) still to be reached,
+    plus those reached but required again, each weighing its cheapest achiever's cost.
+    Acceptance is inferred from the state through the landmark labels (no search-path
+    memory). Not admissible. Preferred operators: applicable achievers of the next
+    landmarks. O(state facts + missing landmarks) big-int operations per state, after a
+    one-off label propagation."""
+
+    name: ClassVar[str] = "lmcount"
+    admissible: ClassVar[bool] = False
+
+    def for_task(self, task: GroundTask) -> LandmarkCountEstimator:
+        relaxed = relax(task)
+        graph = find_landmarks(relaxed, task.init, task.derived)
+        informative = 0
+        for fact, fact_label in enumerate(graph.label):
+            if fact_label & graph.landmarks:
+                informative |= 1 << fact
+        weight = None
+        if not relaxed.unit_cost:
+            weight = [min((relaxed.cost[op] for op in ops), default=0) for ops in graph.achievers]
+        operators = task.operators
+        return LandmarkCountEstimator(
+            graph=graph,
+            goal_mask=task.goal_mask,
+            informative=informative,
+            initially=graph.landmarks & task.init,
+            weight=weight,
+            operator=relaxed.operator,
+            pre_masks=[operators[i].pre_mask if i >= 0 else 0 for i in relaxed.operator],
+            neg_masks=[operators[i].pre_neg_mask if i >= 0 else 0 for i in relaxed.operator],
+        )
