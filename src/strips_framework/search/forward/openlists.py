@@ -55,10 +55,14 @@ class BestFirstOpenList(Generic[Item]):
 
 
 class AlternationOpenList(Generic[Item]):
+    """Two heaps of ``(key, order, item)``: every entry, and the preferred ones (the
+    lists are inlined here because the lazy search pushes every successor through them)."""
+
     def __init__(self, boost: int) -> None:
         self.boost = boost
-        self._all: BestFirstOpenList[Item] = BestFirstOpenList()
-        self._preferred: BestFirstOpenList[Item] = BestFirstOpenList()
+        self._all: list[tuple[object, int, Item]] = []
+        self._preferred: list[tuple[object, int, Item]] = []
+        self._order = itertools.count()
         #: Turns taken by each list (lower goes next); boosting lowers the preferred one's.
         self._turns = [0, 0]
 
@@ -66,18 +70,18 @@ class AlternationOpenList(Generic[Item]):
         return len(self._all) + len(self._preferred)
 
     def push(self, key: object, item: Item, preferred: bool = False) -> None:
-        self._all.push(key, item)
+        entry = (key, next(self._order), item)
+        heapq.heappush(self._all, entry)
         if preferred:
-            self._preferred.push(key, item)
+            heapq.heappush(self._preferred, entry)
 
     def pop(self) -> Item:
         turns = self._turns
-        use_preferred = len(self._preferred) and (turns[1] < turns[0] or not self._all)
-        if use_preferred:
+        if self._preferred and (turns[1] < turns[0] or not self._all):
             turns[1] += 1
-            return self._preferred.pop()
+            return heapq.heappop(self._preferred)[2]
         turns[0] += 1
-        return self._all.pop()
+        return heapq.heappop(self._all)[2]
 
     def reward_progress(self) -> None:
         self._turns[1] -= self.boost
