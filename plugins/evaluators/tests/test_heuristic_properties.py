@@ -21,6 +21,8 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask, mask_of
 from strips_framework.pddl import find_domain, load_task
+from strips_framework.plugins import Registry
+from strips_framework.search.limits import Limits
 
 
 def _find_ipc() -> Path | None:
@@ -183,3 +185,20 @@ def test_unit_cost_layers_agree_with_the_dijkstra_exploration(task_and_costs) ->
         cost = max_exploration(relaxed, state, relaxed.cost, unused, unused[:])
         expected = max(cost[fact] for fact in relaxed.goal)
         assert unit_cost_hmax(relaxed, state) == expected
+
+
+@pytest.mark.parametrize("heuristic", ["lmcut", "hmax", "blind"])
+def test_astar_with_an_admissible_heuristic_finds_optimal_plans(task_and_costs, heuristic) -> None:
+    """A* (the search helper's, from the registry) with each admissible heuristic returns
+    a plan of the optimal cost, or proves the task unsolvable."""
+    task, optimal = task_and_costs
+    registry = Registry.from_plugins()
+    if "astar" not in registry.names("strategy"):
+        pytest.skip("no forward A* strategy registered")
+    strategy = registry.get("strategy", "astar").cls()
+    estimator = HEURISTICS[heuristic]().for_task(task)
+    result = strategy.search_task(task, estimator, Limits(time=60))
+    if optimal[task.init] == math.inf:
+        assert not result.solved
+    else:
+        assert result.solved and result.cost == optimal[task.init]
