@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
-from strips_framework.grounding import ground
+from strips_framework.grounding import ground as ground_all
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.task import GroundTask
+
+
+def ground(task):
+    """Grounding without relevance pruning, so every reachable fact and operator shows."""
+    return ground_all(task, prune_irrelevant=False)
 
 
 def names(task: GroundTask, facts: tuple[int, ...]) -> list[str]:

@@ -38,7 +38,7 @@ def lifted_applicable(task: PddlTask, validator: PlanValidator, model) -> set[st
 
 
 def walk_and_compare(task: PddlTask, steps: int, seed: int) -> None:
-    ground_task = ground(task)
+    ground_task = ground(task, prune_irrelevant=False)
     evaluator = AxiomEvaluator(ground_task)
     validator = PlanValidator(task)
     derived = {rule.head.predicate for rule in task.domain.derived}

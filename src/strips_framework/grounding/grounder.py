@@ -22,6 +22,7 @@ from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.normalize import Clause, Normalizer
 from strips_framework.grounding.reachability import Args, FactIndex, Reachability, Rule, Slots
+from strips_framework.grounding.relevance import relevant_part
 from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask
 from strips_framework.pddl.formulas import Atom, Parameter
 from strips_framework.pddl.task import Action, PddlTask, missing_cost
@@ -44,9 +45,12 @@ class _Source:
     head: Atom | None = None
 
 
-def ground(task: PddlTask) -> GroundTask:
-    """The ground task of ``task``; see the module docstring."""
-    return _Grounder(task).ground()
+def ground(task: PddlTask, prune_irrelevant: bool = True) -> GroundTask:
+    """The ground task of ``task``; see the module docstring. With ``prune_irrelevant``
+    the facts and operators that cannot matter to the goal are left out too (see
+    :mod:`.relevance`)."""
+    grounded = _Grounder(task).ground()
+    return relevant_part(grounded) if prune_irrelevant else grounded
 
 
 def fact_name(predicate: str, args: Args) -> str:
