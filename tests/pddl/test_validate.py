@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from strips_framework.pddl.validate import read_plan, validate_plan
+from strips_framework.pddl.validate import validate_plan
 
 BLOCKS_PLAN = ["(unstack a b)", "(put-down a)", "(pick-up b)", "(stack b c)"]
 
@@ -87,8 +87,3 @@ def test_imply_and_forall_in_preconditions(load):
     check = validate_plan(task, ["(move hall1 r1)", "(clean r1)"])
     assert not check.valid
     assert "(key-at k1 r1) is true (for ?k = k1)" in check.message
-
-
-def test_read_plan_skips_comments_and_blank_lines():
-    text = "(pick-up a)\n\n; a comment\n(stack a b) ; trailing\n; cost = 2 (unit cost)\n"
-    assert read_plan(text) == ["(pick-up a)", "(stack a b)"]

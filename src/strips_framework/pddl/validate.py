@@ -44,16 +44,6 @@ class PlanCheck:
     cost: int
 
 
-def read_plan(text: str) -> list[str]:
-    """The steps of an IPC plan file: one ``(action arg ...)`` a line, ``;`` comments."""
-    steps = []
-    for line in text.splitlines():
-        line = line.split(";", 1)[0].strip()
-        if line:
-            steps.append(line)
-    return steps
-
-
 def validate_plan(task: PddlTask, steps: Sequence[str]) -> PlanCheck:
     """Replay ``steps`` from the initial state and check the goal."""
     return PlanValidator(task).check(steps)
