@@ -53,11 +53,11 @@ class EagerSearch(ForwardStrategy):
             if closed[number]:
                 continue
             closed[number] = 1
+            budget.check(run.expanded)
+            run.expanded += 1  # counted before the goal test, as Fast Downward counts
             state = states[number]
             if state & goal == goal:
                 return number
-            budget.check(run.expanded)
-            run.expanded += 1
             preferred = frozenset(preferred_of(state)[1]) if preferred_of else frozenset()
             base = g[number]
             for op in applicable(state):
