@@ -101,7 +101,7 @@ class PddlTask:
     domain_path: str = ""
     problem_path: str = ""
     #: Every type's objects (including subtypes' objects), sorted.
-    objects_by_type: dict[str, tuple[str, ...]] = field(init=False)
+    objects_by_type: dict[str, tuple[str, ...]] = field(init=False, eq=False, repr=False)
 
     @objects_by_type.default
     def _objects_by_type_default(self) -> dict[str, tuple[str, ...]]:
