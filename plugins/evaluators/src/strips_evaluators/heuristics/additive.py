@@ -30,8 +30,8 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
 
     The queue is a dict of buckets (one list of facts per cost) with a heap of the costs
     that have a bucket: most pushes are a list append, and the heap only sees each
-    distinct cost once. A bucket that grows while it is taken (a zero-cost operator)
-    simply comes back as a new bucket of the same cost.
+    distinct cost once. Facts reached at the cost being taken (by a zero-cost operator)
+    go to a new bucket of that cost, taken next.
     """
     pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
     start, cost = start_exploration(relaxed, state)
@@ -62,12 +62,10 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
                         if value < cost[effect]:
                             cost[effect] = value
                             supporter[effect] = op
-                            bucket = buckets.get(value)
-                            if bucket is None:
-                                buckets[value] = [effect]
+                            bucket = buckets.setdefault(value, [])
+                            if not bucket:
                                 heappush(levels, value)
-                            else:
-                                bucket.append(effect)
+                            bucket.append(effect)
     return cost, supporter
 
 

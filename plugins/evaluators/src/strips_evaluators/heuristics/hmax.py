@@ -65,31 +65,34 @@ def max_exploration(
     supporter_cost: list[int],
 ) -> list[float]:
     """hmax of every fact under ``op_cost`` (any non-negative integers), by a Dijkstra over
-    facts. The last precondition of an operator to leave the queue is its costliest: it
+    facts with a bucket queue as in :func:`~strips_evaluators.heuristics.additive.additive_exploration`.
+    The last precondition of an operator to leave the queue is its costliest: it
     becomes the operator's ``supporter``, with its cost in ``supporter_cost`` (LM-cut
     needs both; operators never reached keep their entries)."""
-    shift = relaxed.key_shift
-    mask = (1 << shift) - 1
     add, pre_of = relaxed.add, relaxed.pre_of
-    queue, cost = start_exploration(relaxed, state)
+    start, cost = start_exploration(relaxed, state)
     remaining = relaxed.pre_count[:]
-    while queue:
-        key = heappop(queue)
-        fact_cost = key >> shift
-        fact = key & mask
-        if fact_cost > cost[fact]:
-            continue
-        for op in pre_of[fact]:
-            left = remaining[op] - 1
-            remaining[op] = left
-            if not left:
-                supporter[op] = fact
-                supporter_cost[op] = fact_cost
-                reached = fact_cost + op_cost[op]
-                for effect in add[op]:
-                    if reached < cost[effect]:
-                        cost[effect] = reached
-                        heappush(queue, reached << shift | effect)
+    buckets = {0: start}
+    levels = [0]
+    while levels:
+        level = heappop(levels)
+        for fact in buckets.pop(level):
+            if cost[fact] != level:
+                continue
+            for op in pre_of[fact]:
+                left = remaining[op] - 1
+                remaining[op] = left
+                if not left:
+                    supporter[op] = fact
+                    supporter_cost[op] = level
+                    reached = level + op_cost[op]
+                    for effect in add[op]:
+                        if reached < cost[effect]:
+                            cost[effect] = reached
+                            bucket = buckets.setdefault(reached, [])
+                            if not bucket:
+                                heappush(levels, reached)
+                            bucket.append(effect)
     return cost
 
 

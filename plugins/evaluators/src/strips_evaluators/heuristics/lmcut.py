@@ -13,8 +13,7 @@ LM-cut finds disjunctive action landmarks one at a time and adds up their costs:
    is updated incrementally and the loop repeats until the goal's hmax is 0.
 
 The landmarks are cost-disjoint (each operator's cost is shared out among them), so the
-sum never exceeds the optimal plan cost: admissible. Costs are integers, so the
-priority-queue keys pack ``cost << shift | fact`` into one int.
+sum never exceeds the optimal plan cost: admissible.
 """
 
 from __future__ import annotations
@@ -31,6 +30,8 @@ from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in
 from strips_framework.grounding.task import GroundTask
 
 NO_SUPPORTER = -1
+#: ``only_effect`` entry of an operator with several add effects.
+MANY_EFFECTS = -1
 
 
 @frozen
@@ -42,6 +43,9 @@ class LMCutEstimator:
     goal_fact: int
     #: For each fact, the relaxed operators that add it.
     achievers: list[list[int]]
+    #: Each operator's add effect when it has just one (most do), else MANY_EFFECTS:
+    #: the cut search then needs no loop over effects.
+    only_effect: list[int]
 
     def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
         return self.estimate(state), ()
@@ -99,9 +103,9 @@ class LMCutEstimator:
     ) -> list[int]:
         """The operators whose supporter is reachable from ``start`` in the justification
         graph without entering the goal zone, and that add a goal-zone fact."""
-        add = self.relaxed.add
+        add, only_effect = self.relaxed.add, self.only_effect
         cut = []
-        seen = bytearray(self.relaxed.num_facts)
+        seen = bytearray(goal_zone)  # goal-zone facts are never entered
         stack = start[:]
         for fact in stack:
             seen[fact] = 1
@@ -109,6 +113,14 @@ class LMCutEstimator:
             fact = stack.pop()
             for op in supported[fact]:
                 if supporter[op] != fact:
+                    continue
+                effect = only_effect[op]
+                if effect != MANY_EFFECTS:
+                    if goal_zone[effect]:
+                        cut.append(op)
+                    elif not seen[effect]:
+                        seen[effect] = 1
+                        stack.append(effect)
                     continue
                 effects = add[op]
                 for effect in effects:
@@ -134,40 +146,40 @@ class LMCutEstimator:
         """Propagate the decreases the cheaper ``cut`` operators cause: only operators whose
         supporter got cheaper can get cheaper, and then they may take a new supporter."""
         relaxed = self.relaxed
-        shift = relaxed.key_shift
-        mask = (1 << shift) - 1
-        pre, add, pre_of = relaxed.pre, relaxed.add, relaxed.pre_of
-        queue: list[int] = []
-        for op in cut:
-            reached = supporter_cost[op] + op_cost[op]
-            for effect in add[op]:
-                if reached < hmax[effect]:
-                    hmax[effect] = reached
-                    heappush(queue, reached << shift | effect)
-        while queue:
-            key = heappop(queue)
-            fact_cost = key >> shift
-            fact = key & mask
-            if fact_cost > hmax[fact]:
-                continue
-            for op in pre_of[fact]:
-                if supporter[op] != fact or supporter_cost[op] <= fact_cost:
+        pre, add = relaxed.pre, relaxed.add
+        buckets: dict[int, list[int]] = {}
+        levels: list[int] = []
+        lowered = [(supporter_cost[op] + op_cost[op], add[op]) for op in cut]
+        while lowered or levels:
+            for reached, effects in lowered:
+                for effect in effects:
+                    if reached < hmax[effect]:
+                        hmax[effect] = reached
+                        bucket = buckets.setdefault(reached, [])
+                        if not bucket:
+                            heappush(levels, reached)
+                        bucket.append(effect)
+            lowered = []
+            if not levels:
+                break
+            level = heappop(levels)
+            for fact in buckets.pop(level):
+                if hmax[fact] != level:
                     continue
-                best, best_cost = fact, fact_cost
-                for condition in pre[op]:
-                    if hmax[condition] > best_cost:
-                        best, best_cost = condition, hmax[condition]
-                old_cost = supporter_cost[op]
-                if best != fact:
-                    supporter[op] = best
-                    supported[best].append(op)
-                supporter_cost[op] = best_cost
-                if best_cost != old_cost:
-                    reached = best_cost + op_cost[op]
-                    for effect in add[op]:
-                        if reached < hmax[effect]:
-                            hmax[effect] = reached
-                            heappush(queue, reached << shift | effect)
+                for op in supported[fact]:
+                    if supporter[op] != fact or supporter_cost[op] <= level:
+                        continue
+                    best, best_cost = fact, level
+                    for condition in pre[op]:
+                        if hmax[condition] > best_cost:
+                            best, best_cost = condition, hmax[condition]
+                    old_cost = supporter_cost[op]
+                    if best != fact:
+                        supporter[op] = best
+                        supported[best].append(op)
+                    supporter_cost[op] = best_cost
+                    if best_cost != old_cost:
+                        lowered.append((best_cost + op_cost[op], add[op]))
 
 
 @frozen
@@ -200,4 +212,5 @@ class LMCutHeuristic:
         for op, effects in enumerate(relaxed.add):
             for fact in effects:
                 achievers[fact].append(op)
-        return LMCutEstimator(relaxed, task.goal_mask, goal_fact, achievers)
+        only_effect = [effects[0] if len(effects) == 1 else MANY_EFFECTS for effects in relaxed.add]
+        return LMCutEstimator(relaxed, task.goal_mask, goal_fact, achievers, only_effect)

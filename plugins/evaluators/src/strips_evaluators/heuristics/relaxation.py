@@ -44,8 +44,6 @@ class RelaxedTask:
     is_goal: list[bool]
     #: True when every operator costs 1 (axioms cost 0): breadth-first layers then suffice.
     unit_cost: bool
-    #: Priority-queue keys are ``cost << key_shift | fact``: one int, compared in C.
-    key_shift: int
     #: hadd's per-operator accumulator, initial values: the cost so far in the high bits
     #: (the operator's own cost to start with), preconditions left in the low
     #: ``count_bits`` bits. One add per reached precondition updates both.
@@ -95,7 +93,6 @@ def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
         goal=goal,
         is_goal=is_goal,
         unit_cost=all(c == 1 for c, o in zip(cost, operator) if o != AXIOM),
-        key_shift=max(num_facts, 1).bit_length(),
         accumulator=[c << count_bits | n for c, n in zip(cost, pre_count)],
         count_bits=count_bits,
     )
