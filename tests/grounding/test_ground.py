@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import pytest
+
+from strips_framework.errors import InputError
 from strips_framework.grounding import ground as ground_all
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.task import GroundTask
@@ -142,3 +145,15 @@ def test_unreachable_goal_keeps_a_fact_nothing_adds(write_task):
     (goal,) = task.goal
     assert task.facts[goal] == "(q o)"
     assert not any(goal in op.add for op in task.operators)
+
+
+def test_negation_cycles_among_derived_predicates_are_refused(write_task):
+    task = write_task(
+        """(define (domain d) (:predicates (p ?x) (q ?x) (r ?x))
+           (:derived (p ?x) (and (r ?x) (not (q ?x))))
+           (:derived (q ?x) (p ?x))
+           (:action a :parameters (?x) :precondition (p ?x) :effect (r ?x)))""",
+        """(define (problem p) (:domain d) (:objects o) (:init (r o)) (:goal (r o)))""",
+    )
+    with pytest.raises(InputError, match="depends negatively on itself"):
+        ground(task)

@@ -154,3 +154,13 @@ def test_error_text_has_file_line_and_column(write):
             domain_with("(:action a :parameters (?x) :precondition (r ?x) :effect (p ?x))"), PROBLEM
         )
     assert str(error.value).endswith("domain.pddl:4:45: undeclared predicate 'r'")
+
+
+def test_derived_predicates_cannot_be_effects(write):
+    domain = domain_with(
+        "(:action a :parameters (?x) :effect (p ?x))", "\n  (:derived (p ?x) (q ?x ?x))"
+    )
+    with pytest.raises(InputError) as error:
+        write(domain, PROBLEM)
+    assert error.value.line == 5
+    assert "changes 'p', a derived predicate" in error.value.message

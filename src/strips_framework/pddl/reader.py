@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from strips_framework.errors import InputError
 from strips_framework.pddl.formulas import (
     TRUE,
     And,
@@ -233,6 +234,17 @@ def read_domain(source: Source) -> Domain:
             actions.append(_action(reader, section, set(functions)))
         else:
             derived.append(_derived(reader, section))
+    heads = {rule.head.predicate for rule in derived}
+    for action in actions:
+        for atom in (*action.add, *action.delete):
+            if atom.predicate in heads:
+                raise InputError(
+                    source.path,
+                    action.line,
+                    None,
+                    f"action {action.name!r} changes {atom.predicate!r}, a derived predicate "
+                    "(derived predicates are computed, never added or deleted)",
+                )
     return Domain(
         name,
         requirements,
