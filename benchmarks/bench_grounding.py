@@ -1,13 +1,15 @@
 """Parse and grounding time of IPC tasks.
 
     .venv/bin/python -m pytest benchmarks/bench_grounding.py --benchmark-columns=min,mean,rounds
-    .venv/bin/python benchmarks/bench_grounding.py          # the table for every domain
+    .venv/bin/python benchmarks/bench_grounding.py             # largest task of each domain
+    .venv/bin/python benchmarks/bench_grounding.py gripper     # every task of gripper
 
 The pytest cases time reading (domain + problem) and grounding separately on a few tasks,
 three rounds each, so the normal test run keeps them as a smoke test. Run as a script, it
-prints for the largest task of every domain in ``shared/bench/ipc``: the number of facts
-and ground operators and the best of three parse and ground times (process CPU time, so a
-loaded machine disturbs it less). Without ``shared/bench/ipc`` the cases skip.
+prints for the largest task of every domain in ``shared/bench/ipc`` (or for every task of
+the domains named) the number of facts and ground operators and the best of three parse
+and ground times (process CPU time, so a loaded machine disturbs it less). Without
+``shared/bench/ipc`` the cases skip.
 """
 
 from __future__ import annotations
@@ -71,16 +73,22 @@ def _largest(domain: Path) -> Path:
     return max(sorted(domain.glob("task*.pddl")), key=lambda path: path.stat().st_size)
 
 
-def main() -> None:
+def main(arguments: list[str]) -> None:
+    """Without arguments, the largest task of every domain; with domain names, every task
+    of those domains (grounding time against the number of operators)."""
     if BENCH is None:
         sys.exit("shared/bench/ipc not found")
+    if arguments:
+        problems = [p for name in arguments for p in sorted((BENCH / name).glob("task*.pddl"))]
+    else:
+        domains = sorted(path for path in BENCH.iterdir() if path.is_dir())
+        problems = [_largest(domain) for domain in domains]
     print(f"{'task':24} {'facts':>7} {'operators':>10} {'parse s':>8} {'ground s':>9}")
-    for domain in sorted(path for path in BENCH.iterdir() if path.is_dir()):
-        problem = _largest(domain)
+    for problem in problems:
         domain_file = find_domain(problem)
         parse, task = _best_of_three(load_task, domain_file, problem)
         grounding, grounded = _best_of_three(ground, task)
-        name = f"{domain.name}/{problem.stem}"
+        name = f"{problem.parent.name}/{problem.stem}"
         print(
             f"{name:24} {len(grounded.facts):7} {len(grounded.operators):10} "
             f"{parse:8.4f} {grounding:9.3f}"
@@ -88,4 +96,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])
