@@ -15,8 +15,9 @@ from pathlib import Path
 import pytest
 
 from strips_evaluators import plugin
+from strips_evaluators.heuristics.additive import additive_exploration
 from strips_evaluators.heuristics.hmax import max_exploration, unit_cost_hmax
-from strips_evaluators.heuristics.relaxation import relax
+from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask, mask_of
@@ -202,3 +203,19 @@ def test_astar_with_an_admissible_heuristic_finds_optimal_plans(task_and_costs, 
         assert not result.solved
     else:
         assert result.solved and result.cost == optimal[task.init]
+
+
+def relaxed_values(relaxed: RelaxedTask, state: int) -> tuple[float, float]:
+    """hadd and hmax of ``state`` in ``relaxed``."""
+    cost, _ = additive_exploration(relaxed, state)
+    unused = [0] * len(relaxed.pre)
+    highest = max_exploration(relaxed, state, relaxed.cost, unused, unused[:])
+    return sum(cost[fact] for fact in relaxed.goal), max(highest[f] for f in relaxed.goal)
+
+
+def test_factoring_shared_preconditions_keeps_hmax_and_hadd(task_and_costs) -> None:
+    """Even factoring every pair shared by two operators changes no hmax or hadd value."""
+    task, optimal = task_and_costs
+    plain, factored = relax(task), relax(task, factor_sharing=2)
+    for state in optimal:
+        assert relaxed_values(factored, state) == relaxed_values(plain, state)

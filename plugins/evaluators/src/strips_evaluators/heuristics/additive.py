@@ -13,6 +13,7 @@ from typing import ClassVar
 
 from attrs import frozen
 
+from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax, start_exploration
 from strips_framework.grounding.task import GroundTask
 
@@ -94,4 +95,4 @@ class AdditiveHeuristic:
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> AdditiveEstimator:
-        return AdditiveEstimator(relax(task), task.goal_mask)
+        return AdditiveEstimator(relax(task, factor_sharing=SHARING), task.goal_mask)

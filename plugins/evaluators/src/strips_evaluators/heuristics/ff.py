@@ -14,7 +14,8 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_evaluators.heuristics.additive import additive_exploration
-from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, relax
+from strips_evaluators.heuristics.factoring import SHARING
+from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding.task import GroundTask
 
 
@@ -23,7 +24,8 @@ class FFEstimator:
     relaxed: RelaxedTask
     goal_mask: int
     #: Per relaxed operator: the real operator's precondition and negative-precondition
-    #: masks (0 for axioms), to keep only the really applicable ones as preferred.
+    #: masks (0 for axioms and conjunctions), to keep only the really applicable ones as
+    #: preferred.
     pre_masks: list[int]
     neg_masks: list[int]
 
@@ -38,7 +40,7 @@ class FFEstimator:
         preferred = [
             operator[op]
             for op in plan
-            if operator[op] != AXIOM
+            if operator[op] >= 0
             and state & pre_masks[op] == pre_masks[op]
             and not state & neg_masks[op]
         ]
@@ -80,8 +82,8 @@ class FFHeuristic:
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> FFEstimator:
-        relaxed = relax(task)
+        relaxed = relax(task, factor_sharing=SHARING)
         operators = task.operators
-        pre_masks = [0 if i == AXIOM else operators[i].pre_mask for i in relaxed.operator]
-        neg_masks = [0 if i == AXIOM else operators[i].pre_neg_mask for i in relaxed.operator]
+        pre_masks = [operators[i].pre_mask if i >= 0 else 0 for i in relaxed.operator]
+        neg_masks = [operators[i].pre_neg_mask if i >= 0 else 0 for i in relaxed.operator]
         return FFEstimator(relaxed, task.goal_mask, pre_masks, neg_masks)

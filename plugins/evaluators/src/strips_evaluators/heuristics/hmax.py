@@ -14,6 +14,7 @@ from typing import ClassVar
 
 from attrs import frozen
 
+from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax, start_exploration
 from strips_framework.grounding.task import GroundTask
 
@@ -127,4 +128,4 @@ class MaxHeuristic:
     admissible: ClassVar[bool] = True
 
     def for_task(self, task: GroundTask) -> MaxEstimator:
-        return MaxEstimator(relax(task), task.goal_mask)
+        return MaxEstimator(relax(task, factor_sharing=SHARING), task.goal_mask)

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from attrs import frozen
 
-from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in
+from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in
 from strips_framework.grounding.task import mask_of
 
 
@@ -51,7 +51,7 @@ def find_landmarks(relaxed: RelaxedTask, init: int, derived: tuple[int, ...]) ->
         landmarks &= ~(1 << fact)
     achievers: list[list[int]] = [[] for _ in range(relaxed.num_facts)]
     for op in reachable_ops:
-        if relaxed.operator[op] != AXIOM:
+        if relaxed.operator[op] >= 0:
             for fact in relaxed.add[op]:
                 if landmarks >> fact & 1:
                     achievers[fact].append(op)

@@ -16,10 +16,13 @@ import math
 
 from attrs import frozen
 
+from strips_evaluators.heuristics.factoring import factor_shared_pairs
 from strips_framework.grounding.task import GroundTask
 
 #: ``operator`` entry of a relaxed operator that comes from an axiom.
 AXIOM = -1
+#: ``operator`` entry of a conjunction made by :func:`factor_shared_pairs`.
+CONJUNCTION = -2
 
 
 @frozen
@@ -31,7 +34,7 @@ class RelaxedTask:
     pre: list[tuple[int, ...]]
     add: list[tuple[int, ...]]
     cost: list[int]
-    #: Index into ``task.operators``, or :data:`AXIOM`.
+    #: Index into ``task.operators``, or :data:`AXIOM` or :data:`CONJUNCTION` (negative).
     operator: list[int]
     #: Number of preconditions of each relaxed operator: the template of the counters.
     pre_count: list[int]
@@ -42,7 +45,8 @@ class RelaxedTask:
     true_fact: int
     goal: tuple[int, ...]
     is_goal: list[bool]
-    #: True when every operator costs 1 (axioms cost 0): breadth-first layers then suffice.
+    #: True when every operator costs 1 (axioms and conjunctions cost 0): breadth-first
+    #: layers then suffice.
     unit_cost: bool
     #: hadd's per-operator accumulator, initial values: the cost so far in the high bits
     #: (the operator's own cost to start with), preconditions left in the low
@@ -51,9 +55,11 @@ class RelaxedTask:
     count_bits: int
 
 
-def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
+def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> RelaxedTask:
     """The relaxed task; ``extra_facts`` reserves fact numbers after the task's own and
-    :attr:`RelaxedTask.true_fact` for artificial facts a heuristic adds."""
+    :attr:`RelaxedTask.true_fact` for artificial facts a heuristic adds. With
+    ``factor_sharing`` > 0, precondition pairs shared by at least that many operators
+    become conjunction facts (see :mod:`.factoring`)."""
     pre: list[tuple[int, ...]] = []
     add: list[tuple[int, ...]] = []
     cost: list[int] = []
@@ -71,6 +77,13 @@ def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
         cost.append(0)
         operator.append(AXIOM)
     num_facts = true_fact + 1 + extra_facts
+    if factor_sharing:
+        pre, conjunctions = factor_shared_pairs(pre, num_facts, factor_sharing)
+        num_facts += len(conjunctions)
+        pre.extend(conjunctions)
+        add.extend((node,) for node in range(num_facts - len(conjunctions), num_facts))
+        cost.extend(0 for _ in conjunctions)
+        operator.extend(CONJUNCTION for _ in conjunctions)
     pre_of: list[list[int]] = [[] for _ in range(num_facts)]
     for op, facts in enumerate(pre):
         for fact in facts:
@@ -92,7 +105,7 @@ def relax(task: GroundTask, extra_facts: int = 0) -> RelaxedTask:
         true_fact=true_fact,
         goal=goal,
         is_goal=is_goal,
-        unit_cost=all(c == 1 for c, o in zip(cost, operator) if o != AXIOM),
+        unit_cost=all(c == 1 for c, o in zip(cost, operator) if o >= 0),
         accumulator=[c << count_bits | n for c, n in zip(cost, pre_count)],
         count_bits=count_bits,
     )
