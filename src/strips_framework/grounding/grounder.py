@@ -274,13 +274,16 @@ class _Builder:
             if pre & pre_neg:
                 continue
             add = self._facts(self.add, values)
+            delete = self._facts(self.delete, values) - add
+            if add <= pre and not delete:
+                continue  # changes nothing wherever it applies
             cost_args = self.cost_args(values)
             result.append(
                 GroundOperator(
                     name=fact_name(action.name, key[: self.arity]),
                     pre=tuple(sorted(pre)),
                     add=tuple(sorted(add)),
-                    delete=tuple(sorted(self._facts(self.delete, values) - add)),
+                    delete=tuple(sorted(delete)),
                     cost=self.grounder.cost(action, cost_args),
                     pre_neg=tuple(sorted(pre_neg)),
                 )

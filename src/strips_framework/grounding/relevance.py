@@ -50,10 +50,13 @@ def relevant_part(task: GroundTask) -> GroundTask:
     if len(keep) == len(task.facts) and len(operators) == len(task.operators):
         return task
     new = {old: i for i, old in enumerate(keep)}
+    # Operators whose relevant effects are already among their preconditions change
+    # nothing that matters any more: they go too.
+    kept = [_operator(task.operators[i], new) for i in sorted(operators)]
     return GroundTask(
         name=task.name,
         facts=tuple(task.facts[old] for old in keep),
-        operators=tuple(_operator(task.operators[i], new) for i in sorted(operators)),
+        operators=tuple(op for op in kept if not set(op.add) <= set(op.pre) or op.delete),
         init=sum(
             1 << new[fact]
             for fact in range(len(task.facts))
