@@ -22,7 +22,7 @@ from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.normalize import Clause, Normalizer
 from strips_framework.grounding.reachability import Args, FactIndex, Reachability, Rule, Slots
-from strips_framework.grounding.relevance import relevant_part
+from strips_framework.grounding.relevance import RawAxiom, RawOperator, relevant
 from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask
 from strips_framework.pddl.formulas import Atom, Parameter
 from strips_framework.pddl.task import Action, PddlTask, missing_cost
@@ -49,8 +49,7 @@ def ground(task: PddlTask, prune_irrelevant: bool = True) -> GroundTask:
     """The ground task of ``task``; see the module docstring. With ``prune_irrelevant``
     the facts and operators that cannot matter to the goal are left out too (see
     :mod:`.relevance`)."""
-    grounded = _Grounder(task).ground()
-    return relevant_part(grounded) if prune_irrelevant else grounded
+    return _Grounder(task, prune_irrelevant).ground()
 
 
 def fact_name(predicate: str, args: Args) -> str:
@@ -58,8 +57,9 @@ def fact_name(predicate: str, args: Args) -> str:
 
 
 class _Grounder:
-    def __init__(self, task: PddlTask) -> None:
+    def __init__(self, task: PddlTask, prune_irrelevant: bool) -> None:
         self.task = task
+        self.prune_irrelevant = prune_irrelevant
         domain = task.domain
         self.derived = {rule.head.predicate for rule in domain.derived} | {GOAL}
         changed = {atom.predicate for a in domain.actions for atom in (*a.add, *a.delete)}
@@ -135,8 +135,8 @@ class _Grounder:
         by_predicate: dict[str, dict[Args, int]] = {}
         for (predicate, args), i in number.items():
             by_predicate.setdefault(predicate, {})[args] = i
-        operators: set[GroundOperator] = set()
-        axioms: set[GroundAxiom] = set()
+        operators: set[RawOperator] = set()
+        axioms: set[RawAxiom] = set()
         strata = self._strata()
         for source, slots, instances in zip(self.sources, reach.slots, reach.instances):
             builder = _Builder(self, source, slots, by_predicate)
@@ -149,16 +149,33 @@ class _Grounder:
             if self.goal_atoms is None
             else tuple(sorted(number[f] for f in goal_facts))
         )
+        raw_operators, raw_axioms = sorted(operators), sorted(axioms)
+        keep: list[int] | range = range(len(names))
+        if self.prune_irrelevant:
+            kept, chosen = relevant(goal, raw_operators, raw_axioms)
+            keep = sorted(kept)
+            raw_operators = [raw_operators[i] for i in chosen]
+            raw_axioms = [axiom for axiom in raw_axioms if axiom.head in kept]
+        new = [-1] * len(names)
+        for i, old in enumerate(keep):
+            new[old] = i
         task = GroundTask(
             name=self.task.name,
-            facts=tuple(name for name, _ in names),
-            operators=tuple(
-                sorted(operators, key=lambda op: (op.name, op.pre, op.pre_neg, op.add, op.delete))
+            facts=tuple(names[old][0] for old in keep),
+            operators=_final_operators(raw_operators, new, len(keep)),
+            init=sum(1 << new[number[fact]] for fact in set(self.init) if new[number[fact]] >= 0),
+            goal=tuple(new[fact] for fact in goal),
+            axioms=tuple(
+                GroundAxiom(
+                    new[a.head], _renumber(a.body, new), _renumber(a.body_neg, new), a.stratum
+                )
+                for a in raw_axioms
             ),
-            init=sum(1 << number[fact] for fact in set(self.init)),
-            goal=goal,
-            axioms=tuple(sorted(axioms, key=lambda a: (a.stratum, a.head, a.body, a.body_neg))),
-            derived=tuple(i for i, (_, (pred, _)) in enumerate(names) if pred in self.derived),
+            derived=tuple(
+                new[i]
+                for i, (_, (pred, _)) in enumerate(names)
+                if pred in self.derived and new[i] >= 0
+            ),
             uses_costs=self.task.problem.minimize_cost,
         )
         return evolve(task, init=AxiomEvaluator(task).evaluate(task.init))
@@ -263,7 +280,7 @@ class _Builder:
                 found.add(fact)
         return found
 
-    def operators(self, instances: list[Args]) -> list[GroundOperator]:
+    def operators(self, instances: list[Args]) -> list[RawOperator]:
         action = self.source.action
         assert action is not None
         result = []
@@ -279,18 +296,18 @@ class _Builder:
                 continue  # changes nothing wherever it applies
             cost_args = self.cost_args(values)
             result.append(
-                GroundOperator(
-                    name=fact_name(action.name, key[: self.arity]),
-                    pre=tuple(sorted(pre)),
-                    add=tuple(sorted(add)),
-                    delete=tuple(sorted(delete)),
-                    cost=self.grounder.cost(action, cost_args),
-                    pre_neg=tuple(sorted(pre_neg)),
+                RawOperator(
+                    fact_name(action.name, key[: self.arity]),
+                    tuple(sorted(pre)),
+                    tuple(sorted(pre_neg)),
+                    tuple(sorted(add)),
+                    tuple(sorted(delete)),
+                    self.grounder.cost(action, cost_args),
                 )
             )
         return result
 
-    def axioms(self, instances: list[Args], stratum: int) -> list[GroundAxiom]:
+    def axioms(self, instances: list[Args], stratum: int) -> list[RawAxiom]:
         facts, pick = self.head
         result = []
         for key in instances:
@@ -300,8 +317,33 @@ class _Builder:
             if body & body_neg:
                 continue
             head = facts[pick(values)]
-            result.append(GroundAxiom(head, tuple(sorted(body)), tuple(sorted(body_neg)), stratum))
+            result.append(RawAxiom(stratum, head, tuple(sorted(body)), tuple(sorted(body_neg))))
         return result
+
+
+def _renumber(facts: tuple[int, ...], new: list[int]) -> tuple[int, ...]:
+    """``facts`` in the final numbering (``new[old]``, -1 for a fact left out)."""
+    return tuple([new[fact] for fact in facts if new[fact] >= 0])
+
+
+def _final_operators(
+    raw: list[RawOperator], new: list[int], kept: int
+) -> tuple[GroundOperator, ...]:
+    """The operators in the final numbering, ``kept`` facts of ``len(new)`` kept. Where
+    facts were left out, an operator whose remaining adds are among its preconditions and
+    which deletes nothing remaining changes nothing that matters: it is left out too."""
+    if kept == len(new):
+        return tuple(
+            GroundOperator(op.name, op.pre, op.add, op.delete, op.cost, op.pre_neg) for op in raw
+        )
+    result = []
+    for op in raw:
+        pre, add, delete = _renumber(op.pre, new), _renumber(op.add, new), _renumber(op.delete, new)
+        if delete or not set(add) <= set(pre):
+            result.append(
+                GroundOperator(op.name, pre, add, delete, op.cost, _renumber(op.pre_neg, new))
+            )
+    return tuple(result)
 
 
 def _picker(slots: tuple[int, ...]) -> Callable[[Args], Args]:

@@ -1,4 +1,4 @@
-"""Backward relevance: dropping the facts and operators that cannot matter to the goal.
+"""Backward relevance: which facts and operators can matter to the goal.
 
 Relaxed reachability keeps everything that *can* happen; much of it cannot help: in
 rovers, say, data about objectives no goal mentions. A fact is relevant when the goal
@@ -6,88 +6,72 @@ needs it, or a relevant operator's or axiom's condition does (positively or nega
 operator is relevant when it adds a relevant fact or deletes one that some relevant
 condition needs to be false; an axiom when its head is relevant. Every plan stays a plan
 once the other operators are left out of it (they add nothing anyone reads and delete
-nothing a negated condition waits for), and every state that differs only in irrelevant
-facts is the same state to search, as in Fast Downward's translator.
+nothing a negated condition waits for), and states that differ only in irrelevant facts
+are the same state to search, as in Fast Downward's translator.
+
+The analysis runs on the grounder's plain records, before the final fact numbering, so
+operators are built once.
 """
 
 from __future__ import annotations
 
-from attrs import evolve
-
-from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask
-
-
-def relevant_part(task: GroundTask) -> GroundTask:
-    """``task`` without its irrelevant facts, operators and axioms (facts renumbered in
-    their old order)."""
-    needed: set[int] = set(task.goal)  # facts some relevant condition needs true
-    needed_false: set[int] = set()  # ... or false
-    operators: set[int] = set()
-    axioms_by_head: dict[int, list[GroundAxiom]] = {}
-    for axiom in task.axioms:
-        axioms_by_head.setdefault(axiom.head, []).append(axiom)
-    changed = True
-    while changed:
-        changed = False
-        for index, op in enumerate(task.operators):
-            if index in operators:
-                continue
-            if needed.intersection(op.add) or needed_false.intersection(op.delete):
-                operators.add(index)
-                needed.update(op.pre)
-                needed_false.update(op.pre_neg)
-                changed = True
-        for head, axioms in axioms_by_head.items():
-            if head in needed or head in needed_false:
-                for axiom in axioms:
-                    if not needed.issuperset(axiom.body) or not needed_false.issuperset(
-                        axiom.body_neg
-                    ):
-                        needed.update(axiom.body)
-                        needed_false.update(axiom.body_neg)
-                        changed = True
-    keep = sorted(needed | needed_false)
-    if len(keep) == len(task.facts) and len(operators) == len(task.operators):
-        return task
-    new = {old: i for i, old in enumerate(keep)}
-    # Operators whose relevant effects are already among their preconditions change
-    # nothing that matters any more: they go too.
-    kept = [_operator(task.operators[i], new) for i in sorted(operators)]
-    return GroundTask(
-        name=task.name,
-        facts=tuple(task.facts[old] for old in keep),
-        operators=tuple(op for op in kept if not set(op.add) <= set(op.pre) or op.delete),
-        init=sum(
-            1 << new[fact]
-            for fact in range(len(task.facts))
-            if task.init >> fact & 1 and fact in new
-        ),
-        goal=tuple(new[fact] for fact in task.goal),
-        axioms=tuple(_axiom(axiom, new) for axiom in task.axioms if axiom.head in new),
-        derived=tuple(new[fact] for fact in task.derived if fact in new),
-        uses_costs=task.uses_costs,
-    )
+from collections.abc import Sequence
+from typing import NamedTuple
 
 
-def _kept(facts: tuple[int, ...], new: dict[int, int]) -> tuple[int, ...]:
-    return tuple(new[fact] for fact in facts if fact in new)
+class RawOperator(NamedTuple):
+    """A ground operator before the final numbering (a tuple, so records sort and hash
+    cheaply; fields in the order operators are sorted)."""
+
+    name: str
+    pre: tuple[int, ...]
+    pre_neg: tuple[int, ...]
+    add: tuple[int, ...]
+    delete: tuple[int, ...]
+    cost: int
 
 
-def _operator(op: GroundOperator, new: dict[int, int]) -> GroundOperator:
-    return GroundOperator(
-        name=op.name,
-        pre=_kept(op.pre, new),
-        add=_kept(op.add, new),
-        delete=_kept(op.delete, new),
-        cost=op.cost,
-        pre_neg=_kept(op.pre_neg, new),
-    )
+class RawAxiom(NamedTuple):
+    """A ground axiom before the final numbering, fields in sorting order."""
+
+    stratum: int
+    head: int
+    body: tuple[int, ...]
+    body_neg: tuple[int, ...]
 
 
-def _axiom(axiom: GroundAxiom, new: dict[int, int]) -> GroundAxiom:
-    return evolve(
-        axiom,
-        head=new[axiom.head],
-        body=_kept(axiom.body, new),
-        body_neg=_kept(axiom.body_neg, new),
-    )
+def relevant(
+    goal: tuple[int, ...], operators: Sequence[RawOperator], axioms: Sequence[RawAxiom]
+) -> tuple[set[int], list[int]]:
+    """The relevant facts and the indices of the relevant operators.
+
+    A worklist of ``(fact, polarity)`` pairs: a fact needed true makes the operators that
+    add it (and the axioms deriving it) relevant, a fact needed false those that delete
+    it (and its axioms); a relevant operator or axiom needs its own conditions."""
+    adders: dict[int, list[int]] = {}
+    deleters: dict[int, list[int]] = {}
+    for index, op in enumerate(operators):
+        for fact in op.add:
+            adders.setdefault(fact, []).append(index)
+        for fact in op.delete:
+            deleters.setdefault(fact, []).append(index)
+    by_head: dict[int, list[RawAxiom]] = {}
+    for axiom in axioms:
+        by_head.setdefault(axiom.head, []).append(axiom)
+    needed: tuple[set[int], set[int]] = (set(), set())  # needed false, needed true
+    chosen: set[int] = set()
+    todo = [(fact, True) for fact in goal]
+    while todo:
+        fact, polarity = todo.pop()
+        if fact in needed[polarity]:
+            continue
+        needed[polarity].add(fact)
+        conditions = [(axiom.body, axiom.body_neg) for axiom in by_head.get(fact, ())]
+        for index in (adders if polarity else deleters).get(fact, ()):
+            if index not in chosen:
+                chosen.add(index)
+                conditions.append((operators[index].pre, operators[index].pre_neg))
+        for positive, negative in conditions:
+            todo.extend((condition, True) for condition in positive)
+            todo.extend((condition, False) for condition in negative)
+    return needed[True] | needed[False], sorted(chosen)
