@@ -127,11 +127,46 @@ class _Grounder:
         )
 
     def _task(self, reach: Reachability) -> GroundTask:
-        facts: set[Fact] = {(pred, args) for pred, known in reach.reached.items() for args in known}
         goal_facts = self._goal_facts()
-        facts.update(goal_facts)
-        names = sorted((fact_name(*fact), fact) for fact in facts)
+        facts = {(pred, args) for pred, known in reach.reached.items() for args in known}
+        names = sorted((fact_name(*fact), fact) for fact in facts | goal_facts)
         number = {fact: i for i, (_, fact) in enumerate(names)}
+        operators, axioms = self._records(reach, number)
+        goal = tuple(sorted(number[fact] for fact in goal_facts))
+        keep: list[int] | range = range(len(names))
+        if self.prune_irrelevant:
+            kept, chosen = relevant(goal, operators, axioms)
+            keep = sorted(kept)
+            operators = [operators[i] for i in chosen]
+            axioms = [axiom for axiom in axioms if axiom.head in kept]
+        new = [-1] * len(names)
+        for i, old in enumerate(keep):
+            new[old] = i
+        task = GroundTask(
+            name=self.task.name,
+            facts=tuple(names[old][0] for old in keep),
+            operators=_final_operators(operators, new, len(keep)),
+            init=sum(1 << new[number[fact]] for fact in set(self.init) if new[number[fact]] >= 0),
+            goal=tuple(new[fact] for fact in goal),
+            axioms=tuple(
+                GroundAxiom(
+                    new[a.head], _renumber(a.body, new), _renumber(a.body_neg, new), a.stratum
+                )
+                for a in axioms
+            ),
+            derived=tuple(
+                new[i]
+                for i, (_, (pred, _)) in enumerate(names)
+                if pred in self.derived and new[i] >= 0
+            ),
+            uses_costs=self.task.problem.minimize_cost,
+        )
+        return evolve(task, init=AxiomEvaluator(task).evaluate(task.init))
+
+    def _records(
+        self, reach: Reachability, number: dict[Fact, int]
+    ) -> tuple[list[RawOperator], list[RawAxiom]]:
+        """The operators and axioms of the instances found, without duplicates, sorted."""
         by_predicate: dict[str, dict[Args, int]] = {}
         for (predicate, args), i in number.items():
             by_predicate.setdefault(predicate, {})[args] = i
@@ -144,41 +179,7 @@ class _Grounder:
                 operators.update(builder.operators(instances))
             elif source.head is not None:
                 axioms.update(builder.axioms(instances, strata[source.head.predicate]))
-        goal = (
-            (number[(GOAL, ())],)
-            if self.goal_atoms is None
-            else tuple(sorted(number[f] for f in goal_facts))
-        )
-        raw_operators, raw_axioms = sorted(operators), sorted(axioms)
-        keep: list[int] | range = range(len(names))
-        if self.prune_irrelevant:
-            kept, chosen = relevant(goal, raw_operators, raw_axioms)
-            keep = sorted(kept)
-            raw_operators = [raw_operators[i] for i in chosen]
-            raw_axioms = [axiom for axiom in raw_axioms if axiom.head in kept]
-        new = [-1] * len(names)
-        for i, old in enumerate(keep):
-            new[old] = i
-        task = GroundTask(
-            name=self.task.name,
-            facts=tuple(names[old][0] for old in keep),
-            operators=_final_operators(raw_operators, new, len(keep)),
-            init=sum(1 << new[number[fact]] for fact in set(self.init) if new[number[fact]] >= 0),
-            goal=tuple(new[fact] for fact in goal),
-            axioms=tuple(
-                GroundAxiom(
-                    new[a.head], _renumber(a.body, new), _renumber(a.body_neg, new), a.stratum
-                )
-                for a in raw_axioms
-            ),
-            derived=tuple(
-                new[i]
-                for i, (_, (pred, _)) in enumerate(names)
-                if pred in self.derived and new[i] >= 0
-            ),
-            uses_costs=self.task.problem.minimize_cost,
-        )
-        return evolve(task, init=AxiomEvaluator(task).evaluate(task.init))
+        return sorted(operators), sorted(axioms)
 
     def _goal_facts(self) -> set[Fact]:
         """The goal's atoms, static ones that hold left out. A goal fact nothing reaches
