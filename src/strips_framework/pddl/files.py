@@ -6,7 +6,8 @@ import re
 from pathlib import Path
 
 from strips_framework.errors import InputError
-from strips_framework.pddl.reader import read_domain, read_problem
+from strips_framework.pddl.domain_file import read_domain
+from strips_framework.pddl.problem_file import read_problem
 from strips_framework.pddl.sexpr import Source
 from strips_framework.pddl.task import PddlTask
 

@@ -1,0 +1,203 @@
+"""Reading a PDDL domain file: types, constants, predicates, functions, actions and
+derived predicates (see :mod:`.reader` for what is accepted and refused)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from strips_framework.errors import InputError
+from strips_framework.pddl.formulas import TRUE, Atom, Parameter
+from strips_framework.pddl.reader import TOTAL_COST, Reader, header, integer, sections, show_value
+from strips_framework.pddl.sexpr import Node, Source
+from strips_framework.pddl.task import Action, Cost, DerivedPredicate, Domain, Predicate
+
+
+def read_domain(source: Source) -> Domain:
+    top = source.read()
+    reader = Reader(source, {"=": 2}, set())
+    name = header(reader, top, "domain")
+    requirements: tuple[str, ...] = ()
+    types: list[tuple[str, str]] = []
+    constants: list[Parameter] = []
+    predicates: list[Predicate] = []
+    functions: list[str] = []
+    bodies: list[Node] = []
+    for section in sections(reader, top, "domain"):
+        key = section[0]
+        if key == ":requirements":
+            requirements = reader.requirements(section)
+        elif key == ":types":
+            for item in reader.typed_list(section, section[1:], variables=False):
+                types.extend((item.name, parent) for parent in item.types if item.name != "object")
+        elif key == ":constants":
+            constants.extend(reader.typed_list(section, section[1:], variables=False))
+        elif key == ":predicates":
+            for item in section[1:]:
+                node = reader.node(item, section, "a predicate declaration (name ?x ...)")
+                pred = reader.name(node[0] if node else None, node, "a predicate name")
+                params = tuple(reader.typed_list(node, node[1:], variables=True))
+                predicates.append(Predicate(pred, params))
+        elif key == ":functions":
+            functions.extend(_functions(reader, section))
+        elif key in (":action", ":derived"):
+            bodies.append(section)
+        elif key == ":durative-action":
+            raise reader.error(section, "not supported: durative actions")
+        elif key == ":constraints":
+            raise reader.error(section, "not supported: constraints")
+        else:
+            raise reader.error(
+                section,
+                f"expected :requirements, :types, :constants, :predicates, :functions, "
+                f":action or :derived, found {key}",
+            )
+    reader.arities.update((pred.name, len(pred.params)) for pred in predicates)
+    reader.objects.update(const.name for const in constants)
+    actions, derived = [], []
+    for section in bodies:
+        if section[0] == ":action":
+            actions.append(_action(reader, section, set(functions)))
+        else:
+            derived.append(_derived(reader, section))
+    heads = {rule.head.predicate for rule in derived}
+    for action in actions:
+        for atom in (*action.add, *action.delete):
+            if atom.predicate in heads:
+                raise InputError(
+                    source.path,
+                    action.line,
+                    None,
+                    f"action {action.name!r} changes {atom.predicate!r}, a derived predicate "
+                    "(derived predicates are computed, never added or deleted)",
+                )
+    return Domain(
+        name,
+        requirements,
+        tuple(types),
+        tuple(constants),
+        tuple(predicates),
+        tuple(functions),
+        tuple(actions),
+        tuple(derived),
+    )
+
+
+def _functions(reader: Reader, section: Node) -> Iterator[str]:
+    items = section[1:]
+    index = 0
+    while index < len(items):
+        item = items[index]
+        if item == "-":
+            if index + 1 >= len(items) or items[index + 1] != "number":
+                raise reader.error(section, "not supported: functions of a type other than number")
+            index += 2
+            continue
+        node = reader.node(item, section, "a function declaration (name ?x ...)")
+        yield reader.name(node[0] if node else None, node, "a function name")
+        index += 1
+
+
+def _keyed(reader: Reader, section: Node, keys: tuple[str, ...]) -> dict[str, object]:
+    """The ``:key value`` pairs after an action's name."""
+    values: dict[str, object] = {}
+    items = section[2:]
+    if len(items) % 2:
+        raise reader.error(section, f"expected pairs of {', '.join(keys)} and a value")
+    for key, value in zip(items[::2], items[1::2], strict=True):
+        if key not in keys:
+            raise reader.error(
+                section, f"expected one of {', '.join(keys)}, found {show_value(key)}"
+            )
+        values[str(key)] = value
+    return values
+
+
+def _action(reader: Reader, section: Node, functions: set[str]) -> Action:
+    if len(section) < 2:
+        raise reader.error(section, "expected an action name after ':action'")
+    name = reader.name(section[1], section, "an action name")
+    parts = _keyed(reader, section, (":parameters", ":precondition", ":effect"))
+    params_node = reader.node(
+        parts.get(":parameters", Node(section.offset)), section, "a parameter list"
+    )
+    params = tuple(reader.typed_list(params_node, list(params_node), variables=True))
+    variables = frozenset(param.name for param in params)
+    pre = parts.get(":precondition")
+    precondition = TRUE if pre is None else reader.formula(pre, section, variables)
+    add: list[Atom] = []
+    delete: list[Atom] = []
+    costs: list[Cost] = []
+    effect = parts.get(":effect")
+    if effect is not None:
+        _effect(
+            reader,
+            reader.node(effect, section, "an effect"),
+            variables,
+            functions,
+            (add, delete, costs),
+        )
+    cost: Cost | None = None
+    if costs:
+        if len(costs) > 1:
+            raise reader.error(section, "expected at most one (increase (total-cost) ...) effect")
+        cost = costs[0]
+    line, _ = reader.source.position(section.offset)
+    return Action(name, params, precondition, tuple(add), tuple(delete), cost, line)
+
+
+def _effect(
+    reader: Reader,
+    node: Node,
+    variables: frozenset[str],
+    functions: set[str],
+    into: tuple[list[Atom], list[Atom], list[Cost]],
+) -> None:
+    add, delete, costs = into
+    head = node[0] if node else None
+    if head is None:
+        return
+    if head == "and":
+        for part in node[1:]:
+            _effect(reader, reader.node(part, node, "an effect"), variables, functions, into)
+    elif head == "not":
+        reader.arity(node, 1)
+        delete.append(reader.atom(reader.node(node[1], node, "an atom"), variables))
+    elif head == "increase":
+        costs.append(_cost(reader, node, variables, functions))
+    elif head == "when":
+        raise reader.error(node, "not supported: conditional effects (when)")
+    elif head == "forall":
+        raise reader.error(node, "not supported: universally quantified effects (forall)")
+    elif head in ("decrease", "assign", "scale-up", "scale-down"):
+        raise reader.error(node, f"not supported: numeric effect '{head}'")
+    else:
+        add.append(reader.atom(node, variables))
+
+
+def _cost(reader: Reader, node: Node, variables: frozenset[str], functions: set[str]) -> Cost:
+    reader.arity(node, 2)
+    target = node[1]
+    if not (isinstance(target, Node) and list(target) == [TOTAL_COST]):
+        raise reader.error(
+            node, "not supported: numeric fluents (only (increase (total-cost) ...))"
+        )
+    amount = node[2]
+    if isinstance(amount, str):
+        return integer(reader, amount, node)
+    term = reader.node(amount, node, "a number or a function term")
+    function = reader.name(term[0] if term else None, term, "a function name")
+    if function not in functions or function == TOTAL_COST:
+        raise reader.error(term, f"undeclared function {function!r}")
+    return Atom(function, tuple(reader.term(arg, term, variables) for arg in term[1:]))
+
+
+def _derived(reader: Reader, section: Node) -> DerivedPredicate:
+    if len(section) != 3:
+        raise reader.error(section, "expected '(:derived (predicate ?x ...) formula)'")
+    head_node = reader.node(section[1], section, "the derived predicate (name ?x ...)")
+    params = tuple(reader.typed_list(head_node, head_node[1:], variables=True))
+    variables = frozenset(param.name for param in params)
+    as_atom = Node(head_node.offset)
+    as_atom.extend([head_node[0] if head_node else None, *(param.name for param in params)])
+    head = reader.atom(as_atom, variables)
+    return DerivedPredicate(head, params, reader.formula(section[2], section, variables))
