@@ -13,7 +13,7 @@ from strips_framework import exit_codes
 from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
-from strips_framework.planner import PDDL_SUFFIX, Planner
+from strips_framework.planner import Planner, is_pddl
 from strips_framework.plugins import KINDS
 from strips_framework.search.forward.budget import LimitReached
 from strips_framework.search.forward.result import ForwardResult
@@ -158,6 +158,7 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     from strips_framework.process_limits import enforced
 
     domain, problem = _domain_and_problem(args.files, "solve")
+    planner = planner.for_input(problem, domain)
     try:
         with enforced(planner.config.limits):
             result = planner.run(problem, domain)
@@ -245,7 +246,7 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
 def _validate(planner: Planner, args: argparse.Namespace) -> int:
     domain, problem = _domain_and_problem(args.files, "validate", rest=1)
     steps = read_plan(args.files[-1])
-    if domain is not None or problem.suffix.lower() == PDDL_SUFFIX:
+    if is_pddl(problem, domain):
         from strips_framework.pddl.validate import validate_plan
 
         check = validate_plan(planner.load_pddl(problem, domain), steps)

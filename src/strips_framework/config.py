@@ -46,6 +46,9 @@ DEFAULT_CHOICES = {
     "evaluator": "paper",
     "heuristic": "ff",
 }
+#: The strategy PDDL input gets when the config names none: what Fast Downward's users
+#: expect of ``strips solve DOMAIN PROBLEM`` (lazy greedy search with hFF).
+PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
 
 
 @frozen
@@ -62,6 +65,8 @@ class Config:
     choices: dict[str, Choice]
     limits: Limits
     source: str = "<defaults>"
+    #: The kinds the config file chose itself (the others took their defaults).
+    chosen: frozenset[str] = frozenset()
 
     @classmethod
     def default(cls) -> Config:
@@ -106,7 +111,15 @@ class Config:
         if not isinstance(limits_table, dict):
             raise ConfigError(f"{source}: 'limits' must be a table, got {_type_name(limits_table)}")
         limits = _instantiate(Limits, limits_table, "limits", source)
-        return cls(choices, limits, source)
+        return cls(choices, limits, source, frozenset(kind for kind in COMPONENTS if kind in data))
+
+    def for_pddl(self) -> Config:
+        """This config for PDDL input: the strategy defaults to :data:`PDDL_DEFAULT_STRATEGY`
+        unless the config chose one."""
+        if "strategy" in self.chosen:
+            return self
+        choices = {**self.choices, "strategy": Choice("strategy", PDDL_DEFAULT_STRATEGY)}
+        return attrs.evolve(self, choices=choices)
 
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""

@@ -55,6 +55,13 @@ class Planner:
         strategy = self.registry.get("strategy", self.config.choices["strategy"].name)
         return getattr(strategy.cls, "works_on", "problem") == GROUND_TASK
 
+    def for_input(self, problem_path: Path, domain_path: Path | None = None) -> Planner:
+        """The planner for this input: PDDL input without a strategy in the config gets
+        the PDDL default strategy (see :meth:`Config.for_pddl`)."""
+        if is_pddl(problem_path, domain_path):
+            return attrs.evolve(self, config=self.config.for_pddl())
+        return self
+
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
         if not path.is_file():
@@ -75,9 +82,10 @@ class Planner:
         self, problem_path: Path, domain_path: Path | None = None
     ) -> SearchResult | ForwardResult:
         """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
-        solve it with the configured strategy, whichever kind it is."""
+        solve it with the configured strategy, whichever kind it is (call it on
+        :meth:`for_input`'s planner to get the PDDL default strategy)."""
         started = time.perf_counter()
-        if domain_path is None and problem_path.suffix.lower() != PDDL_SUFFIX:
+        if not is_pddl(problem_path, domain_path):
             if self.searches_ground_tasks:
                 raise ConfigError(
                     f"{self.config.source}: strategy '{self.config.choices['strategy'].name}' "
@@ -143,3 +151,8 @@ class Planner:
             )
         started = time.perf_counter() if started is None else started
         return strategy.search_task(task, heuristic.for_task(task), self.config.limits, started)
+
+
+def is_pddl(problem_path: Path, domain_path: Path | None = None) -> bool:
+    """True for PDDL input: a domain is given, or the problem file ends in ``.pddl``."""
+    return domain_path is not None or problem_path.suffix.lower() == PDDL_SUFFIX

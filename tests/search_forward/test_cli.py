@@ -124,3 +124,16 @@ def test_same_output_whatever_the_hash_seed(config_path):
                                              if not k.endswith(("seconds", "mib"))}])
 
     assert run("0") == run("1") == run("12345")
+
+
+def test_pddl_without_a_configured_strategy_gets_lazy_greedy_search(capsys):
+    assert main(["solve", str(BLOCKS / "p4.pddl"), "--json"]) == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert payload["config"]["strategy"] == "lazy-gbfs" and payload["config"]["heuristic"] == "ff"
+
+
+def test_a_configured_world_model_strategy_runs_on_pddl(tmp_path, capsys):
+    means_ends = config(tmp_path, '[strategy]\nname = "means-ends"\n')
+    assert main(["solve", str(BLOCKS / "p4.pddl"), "--config", str(means_ends), "--json"]) == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert payload["config"]["strategy"] == "means-ends" and payload["status"] == "solved"
