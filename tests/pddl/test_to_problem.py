@@ -56,6 +56,29 @@ def test_derived_predicates_become_axioms_the_prover_uses(write, make_planner):
     assert validate_plan(task, ipc_steps(result.plan)).valid
 
 
-def test_negated_atoms_are_refused_for_the_open_world_provers(load):
-    with pytest.raises(InputError, match=r"rooms-domain.pddl:20: not supported by means-ends"):
-        to_problem(load("rooms-domain.pddl", "rooms-1.pddl"))
+def test_negative_preconditions_become_complement_predicates(load, make_planner):
+    task = load("lamps-domain.pddl", "lamps-1.pddl")
+    problem = to_problem(task)
+    assert ("not:on", "b") in problem.facts and ("not:on", "a") not in problem.facts
+    assert ("not:on", 1) in problem.primitive_predicates
+    paint = problem.operator("paint")
+    assert ("not:dry", paint.parameters[0]) in paint.add_list
+    result = make_planner(strategy="means-ends", prover="resolution").solve(problem)
+    assert result.solved
+    steps = ipc_steps(result.plan)
+    assert steps == ["(switch-off a)", "(paint a)", "(wait a)", "(switch-on a)"]
+    assert validate_plan(task, steps).valid
+
+
+def test_negated_derived_atoms_are_refused(load):
+    with pytest.raises(InputError, match=r"rooms-2.pddl: not supported by means-ends analysis"):
+        to_problem(load("rooms-domain.pddl", "rooms-2.pddl"))
+
+
+def test_negation_is_pushed_through_imply_and_forall(load):
+    problem = to_problem(load("rooms-domain.pddl", "rooms-1.pddl"))
+    text = str(problem.operator("clean").precondition)
+    # (imply (visited ?r) (forall (?k - key) (not (key-at ?k ?r)))) becomes
+    # not:visited(r) | forall k: type:key(k) -> not:key-at(k, r).
+    assert "'not:visited'" in text and "'not:key-at'" in text
+    assert "Implies" in text and "Not(" not in text

@@ -9,13 +9,18 @@ analysis and the provers run on PDDL input.
 - Derived predicates become axioms ``forall x: body -> head`` the prover uses.
 - Action costs are dropped: means-ends analysis does not optimize cost.
 
-The provers reason in an open world: a negated atom is proved only from axioms, never
-from the absence of a fact. So negative literals over predicates (other than equality,
-which unique names decide) are rejected with a clear error rather than searched for in
-vain.
+The provers reason in an open world: the absence of a fact proves nothing. PDDL's closed
+world is compiled in where it is used: negation is pushed down to the atoms, and a
+negated atom ``(not (p a))`` becomes the atom ``not:p(a)`` of a complement predicate whose
+initial facts are the type-correct tuples ``p`` lacks and which every action that adds or
+deletes a ``p`` atom deletes or adds. Negated derived predicates have no such complement
+(axioms only derive what holds) and are refused with a clear error; equality needs
+none, unique names decide it.
 """
 
 from __future__ import annotations
+
+from itertools import product
 
 from strips_framework.errors import InputError
 from strips_framework.logic import formulas as logic
@@ -32,14 +37,42 @@ def type_predicate(kind: str) -> str:
     return f"type:{kind}"
 
 
+def complement_predicate(predicate: str) -> str:
+    return f"not:{predicate}"
+
+
 def to_problem(task: PddlTask) -> Problem:
     """The framework problem of ``task``; see the module docstring."""
     return _Translator(task).problem()
 
 
+def _negated_predicates(formula: pddl.Formula, negated: bool = False) -> set[str]:
+    """The predicates with an atom under an odd number of negations (after ``imply`` is
+    read as ``or (not ...)``)."""
+    if isinstance(formula, pddl.Atom):
+        return {formula.predicate} if negated and formula.predicate != "=" else set()
+    if isinstance(formula, pddl.Not):
+        return _negated_predicates(formula.part, not negated)
+    if isinstance(formula, pddl.And | pddl.Or):
+        return set().union(*(_negated_predicates(p, negated) for p in formula.parts))
+    if isinstance(formula, pddl.Imply):
+        return _negated_predicates(formula.condition, not negated) | _negated_predicates(
+            formula.consequence, negated
+        )
+    return _negated_predicates(formula.body, negated)
+
+
 class _Translator:
     def __init__(self, task: PddlTask) -> None:
         self.task = task
+        domain = task.domain
+        self.derived = {rule.head.predicate for rule in domain.derived}
+        formulas = [
+            *(action.precondition for action in domain.actions),
+            *(rule.body for rule in domain.derived),
+            task.problem.goal,
+        ]
+        self.complemented = set().union(*(_negated_predicates(f) for f in formulas))
 
     def problem(self) -> Problem:
         task = self.task
@@ -49,10 +82,16 @@ class _Translator:
         facts = [(atom.predicate, *atom.args) for atom in task.problem.init]
         for kind in kinds:
             facts.extend((type_predicate(kind), obj) for obj in task.objects_by_type[kind])
-        derived = {rule.head.predicate for rule in domain.derived}
-        primitive = {(pred.name, len(pred.params)) for pred in domain.predicates}
-        primitive = {pair for pair in primitive if pair[0] not in derived}
+        primitive = {
+            (pred.name, len(pred.params))
+            for pred in domain.predicates
+            if pred.name not in self.derived
+        }
         primitive |= {(type_predicate(kind), 1) for kind in kinds}
+        for pred in domain.predicates:
+            if pred.name in self.complemented and pred.name not in self.derived:
+                facts.extend(self._complement_facts(pred))
+                primitive.add((complement_predicate(pred.name), len(pred.params)))
         operators = [self._operator(action) for action in domain.actions]
         axioms = [self._axiom(rule) for rule in domain.derived]
         goal = self._formula(task.problem.goal, {}, task.problem_path)
@@ -69,18 +108,28 @@ class _Translator:
             source=task.problem_path,
         )
 
+    def _complement_facts(self, predicate: pddl.Predicate) -> list[tuple]:  # type: ignore[name-defined]
+        """``not:p(t)`` for every type-correct tuple ``t`` with ``p(t)`` not initially true."""
+        true = {atom.args for atom in self.task.problem.init if atom.predicate == predicate.name}
+        domains = [self.task.objects_of(param.types) for param in predicate.params]
+        name = complement_predicate(predicate.name)
+        return [(name, *args) for args in product(*domains) if args not in true]
+
     def _operator(self, action: Action) -> OperatorSchema:
         params = {param.name: Param(param.name.lstrip("?")) for param in action.params}
         typed = [self._typed(param, params[param.name]) for param in action.params]
         body = self._formula(action.precondition, params, self.task.domain_path, action.line)
         precondition = _conjunction([*(t for t in typed if t is not None), body])
-        return OperatorSchema(
-            action.name,
-            tuple(params.values()),
-            precondition,
-            tuple(_atom(atom, params) for atom in action.add),
-            tuple(_atom(atom, params) for atom in action.delete),
-        )
+        adds = [_atom(atom, params) for atom in action.add]
+        deletes = [_atom(atom, params) for atom in action.delete]
+        # Complements mirror the effects; an atom both deleted and added ends up true.
+        for atom in action.delete:
+            if atom.predicate in self.complemented and atom not in action.add:
+                adds.append(_atom(atom, params, complement_predicate(atom.predicate)))
+        for atom in action.add:
+            if atom.predicate in self.complemented:
+                deletes.append(_atom(atom, params, complement_predicate(atom.predicate)))
+        return OperatorSchema(action.name, tuple(params.values()), precondition, adds, deletes)
 
     def _axiom(self, rule: DerivedPredicate) -> logic.Formula:
         names = {param.name: logic.Var(param.name.lstrip("?")) for param in rule.params}
@@ -98,43 +147,60 @@ class _Translator:
         return options[0] if len(options) == 1 else logic.Or(options)
 
     def _formula(
-        self, formula: pddl.Formula, names: dict[str, Term], path: str, line: int | None = None
+        self,
+        formula: pddl.Formula,
+        names: dict[str, Term],
+        path: str,
+        line: int | None = None,
+        negated: bool = False,
     ) -> logic.Formula:
+        """``formula`` (negated when ``negated``) with negation pushed down to the atoms."""
+
+        def walk(part: pddl.Formula, flip: bool = False) -> logic.Formula:
+            return self._formula(part, names, path, line, negated != flip)
+
         if isinstance(formula, pddl.Atom):
-            return logic.Atomic(_atom(formula, names))
+            return self._literal(formula, names, path, line, negated)
         if isinstance(formula, pddl.Not):
-            part = formula.part
-            if isinstance(part, pddl.Atom) and part.predicate != "=":
-                raise InputError(
-                    path,
-                    line,
-                    None,
-                    f"not supported by means-ends analysis: the negated atom {part} (the "
-                    "provers reason in an open world); use a forward search strategy",
-                )
-            return logic.Not(self._formula(part, names, path, line))
-        if isinstance(formula, pddl.And):
-            return _conjunction([self._formula(p, names, path, line) for p in formula.parts])
-        if isinstance(formula, pddl.Or):
-            return logic.Or([self._formula(p, names, path, line) for p in formula.parts])
+            return walk(formula.part, True)
         if isinstance(formula, pddl.Imply):
-            return logic.Implies(
-                self._formula(formula.condition, names, path, line),
-                self._formula(formula.consequence, names, path, line),
-            )
+            return walk(pddl.Or((pddl.Not(formula.condition), formula.consequence)))
+        if isinstance(formula, pddl.And | pddl.Or):
+            parts = [walk(part) for part in formula.parts]
+            if isinstance(formula, pddl.And) != negated:
+                return _conjunction(parts)
+            return logic.Or(parts) if parts else logic.Truth(False)
         variables = [logic.Var(param.name.lstrip("?")) for param in formula.params]
         inner = {**names, **{p.name: v for p, v in zip(formula.params, variables)}}
         typed = [self._typed(param, inner[param.name]) for param in formula.params]
         conditions = [t for t in typed if t is not None]
-        body = self._formula(formula.body, inner, path, line)
-        if isinstance(formula, pddl.Exists):
+        body = self._formula(formula.body, inner, path, line, negated)
+        if isinstance(formula, pddl.Exists) != negated:
             return logic.Exists(variables, _conjunction([*conditions, body]))
-        premise = _conjunction(conditions)
-        return logic.Forall(variables, logic.Implies(premise, body) if conditions else body)
+        if not conditions:
+            return logic.Forall(variables, body)
+        return logic.Forall(variables, logic.Implies(_conjunction(conditions), body))
+
+    def _literal(
+        self, atom: pddl.Atom, names: dict[str, Term], path: str, line: int | None, negated: bool
+    ) -> logic.Formula:
+        if not negated:
+            return logic.Atomic(_atom(atom, names))
+        if atom.predicate == "=":
+            return logic.Not(logic.Atomic(_atom(atom, names)))
+        if atom.predicate in self.derived:
+            raise InputError(
+                path,
+                line,
+                None,
+                f"not supported by means-ends analysis: the negated derived atom {atom} "
+                "(the provers' axioms derive only what holds); use a forward search strategy",
+            )
+        return logic.Atomic(_atom(atom, names, complement_predicate(atom.predicate)))
 
 
-def _atom(atom: pddl.Atom, names: dict[str, Term]) -> tuple:
-    return (atom.predicate, *(names.get(arg, arg) for arg in atom.args))
+def _atom(atom: pddl.Atom, names: dict[str, Term], predicate: str | None = None) -> tuple:
+    return (predicate or atom.predicate, *(names.get(arg, arg) for arg in atom.args))
 
 
 def _conjunction(parts: list[logic.Formula]) -> logic.Formula:
