@@ -26,7 +26,7 @@ from strips_framework.errors import InputError
 from strips_framework.logic import formulas as logic
 from strips_framework.logic.terms import Param
 from strips_framework.pddl import formulas as pddl
-from strips_framework.pddl.task import Action, DerivedPredicate, PddlTask
+from strips_framework.pddl.task import Action, DerivedPredicate, PddlTask, Predicate
 from strips_framework.problem import OperatorSchema, Problem
 
 #: Term of a translated atom: a constant, an operator parameter or a quantified variable.
@@ -108,7 +108,7 @@ class _Translator:
             source=task.problem_path,
         )
 
-    def _complement_facts(self, predicate: pddl.Predicate) -> list[tuple]:  # type: ignore[name-defined]
+    def _complement_facts(self, predicate: Predicate) -> list[tuple]:
         """``not:p(t)`` for every type-correct tuple ``t`` with ``p(t)`` not initially true."""
         true = {atom.args for atom in self.task.problem.init if atom.predicate == predicate.name}
         domains = [self.task.objects_of(param.types) for param in predicate.params]
