@@ -5,7 +5,8 @@ each derived predicate one rule per disjunct of its body, and a goal that is not
 conjunction of atoms a rule for the derived fact ``(@goal)``. Relaxed reachability finds
 the rule instances that can ever fire; only those become ground operators and axioms.
 Static facts (of predicates no action changes) are checked during grounding and left out
-of the task.
+of the task; operators that change nothing are dropped, and (by default) so are the facts
+and operators backward relevance analysis finds useless for the goal (:mod:`.relevance`).
 
 Determinism: facts are numbered in the order of their names and operators sorted by name
 (then by their fact lists), so nothing depends on the iteration order of hashed strings.
