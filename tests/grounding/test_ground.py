@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from strips_framework.errors import InputError
 from strips_framework.grounding import ground as ground_all
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.task import GroundTask
+
+DATA = Path(__file__).parents[1] / "pddl" / "data"
 
 
 def ground(task):
@@ -157,3 +161,26 @@ def test_negation_cycles_among_derived_predicates_are_refused(write_task):
     )
     with pytest.raises(InputError, match="depends negatively on itself"):
         ground(task)
+
+
+def test_branching_universal_conditions_become_auxiliary_axioms(load):
+    task = ground(load("crates-domain.pddl", "crates-3.pddl"))
+    (ship,) = [op for op in task.operators if op.name == "(ship)"]
+    (violated,) = names(task, ship.pre_neg)
+    assert violated.startswith("(@forall")
+    assert ship.applicable(task.init)
+    heads = {task.facts[axiom.head] for axiom in task.axioms}
+    assert violated in heads and "(@goal)" in heads
+
+
+def test_auxiliary_axioms_keep_grounding_small(write_task):
+    crates = " ".join(f"c{i}" for i in range(40))
+    task = ground(
+        write_task(
+            (DATA / "crates-domain.pddl").read_text(),
+            f"""(define (problem crates-40) (:domain crates) (:objects {crates} - crate) (:init)
+           (:goal (and (shipped) (forall (?c - crate) (imply (heavy ?c) (loaded ?c))))))""",
+        )
+    )
+    # Without auxiliary axioms (ship) would split into 2^40 operators.
+    assert [op.name for op in task.operators].count("(ship)") == 1

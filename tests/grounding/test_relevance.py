@@ -45,6 +45,7 @@ def tasks() -> list[PddlTask]:
         load_task(DATA / "rooms-domain.pddl", DATA / "rooms-1.pddl"),
         load_task(DATA / "rooms-domain.pddl", DATA / "rooms-2.pddl"),
         load_task(DATA / "blocks-domain.pddl", DATA / "blocks-3.pddl"),
+        load_task(DATA / "crates-domain.pddl", DATA / "crates-3.pddl"),
     ]
     for domain in ("gripper", "miconic", "satellite", "blocks"):
         problem = IPC / domain / "task01.pddl"

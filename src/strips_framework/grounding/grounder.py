@@ -97,6 +97,13 @@ class _Grounder:
             head = Atom(GOAL, ())
             for clause in goal_clauses:
                 self._add_rule(_Source(clause, head=head), (), (head,))
+        done = 0
+        while done < len(normalizer.auxiliary):  # bodies may add more
+            rule = normalizer.auxiliary[done]
+            done += 1
+            self.derived.add(rule.head.predicate)
+            for clause in normalizer.clauses(rule.body):
+                self._add_rule(_Source(clause, head=rule.head), rule.params, (rule.head,))
         objects = frozenset(self.task.objects_of(("object",)))
         reach = Reachability(self.rules, self.static, objects)
         reach.run(self.init)

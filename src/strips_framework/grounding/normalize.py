@@ -2,8 +2,10 @@
 of literals.
 
 ``imply`` is rewritten, negation pushed to the atoms, ``forall`` expanded over the objects
-of its types, and ``exists`` turned into extra (renamed) variables of the conjunction, so
-that grounding binds them like action parameters instead of trying every object. An
+of its types (or, when its body branches, replaced by the negation of an auxiliary derived
+predicate for its violation, as Fast Downward does), and ``exists`` turned into extra
+(renamed) variables of the conjunction, so that grounding binds them like action
+parameters instead of trying every object. An
 action whose precondition has several disjuncts becomes one ground operator per disjunct,
 all with the action's IPC name.
 """
@@ -25,7 +27,7 @@ from strips_framework.pddl.formulas import (
     Or,
     Parameter,
 )
-from strips_framework.pddl.task import PddlTask
+from strips_framework.pddl.task import DerivedPredicate, PddlTask
 
 
 @frozen
@@ -72,6 +74,9 @@ class Normalizer:
     def __init__(self, task: PddlTask) -> None:
         self.task = task
         self._fresh = 0
+        #: Derived predicates made up for universal conditions (see :meth:`_auxiliary`),
+        #: in order of creation; their bodies are normalized like any other.
+        self.auxiliary: list[DerivedPredicate] = []
 
     def clauses(self, formula: Formula) -> list[Clause]:
         """The disjuncts of ``formula``; contradictory ones and false equalities dropped."""
@@ -90,7 +95,23 @@ class Normalizer:
             return _conjoin(parts) if conjunctive else [c for part in parts for c in part]
         if isinstance(formula, Exists) != negated:
             return self._extra_variables(formula.params, formula.body, negated)
-        return _conjoin([self._dnf(body, negated) for body in self._instances(formula)])
+        if not _branches(formula.body, negated):
+            return _conjoin([self._dnf(body, negated) for body in self._instances(formula)])
+        return [Clause(negative=(self._auxiliary(formula, negated),))]
+
+    def _auxiliary(self, formula: Exists | Forall, negated: bool) -> Atom:
+        """The head of a new derived predicate that holds exactly when the universal
+        ``formula`` (read under ``negated``) is violated. Expanding a universal whose body
+        branches would multiply the branches of every instance (2^n clauses for n
+        objects); the violation is a plain existential, so it normalizes to few clauses,
+        and the formula itself becomes the single literal ``not (head)``."""
+        free = sorted(_free_variables(formula))
+        self._fresh += 1
+        head = Atom(f"@forall{self._fresh}", tuple(free))
+        violation = formula.body if isinstance(formula, Exists) else Not(formula.body)
+        params = tuple(Parameter(name) for name in free)
+        self.auxiliary.append(DerivedPredicate(head, params, Exists(formula.params, violation)))
+        return head
 
     def _extra_variables(
         self, params: tuple[Parameter, ...], body: Formula, negated: bool
@@ -118,6 +139,40 @@ def _conjoin(parts: list[list[Clause]]) -> list[Clause]:
     for options in parts:
         result = [done.join(option) for done in result for option in options]
     return result
+
+
+def _branches(formula: Formula, negated: bool) -> bool:
+    """Whether ``formula`` (read under ``negated``) normalizes to more than one clause.
+    Universal quantifiers inside never branch: they expand or become one literal."""
+    if isinstance(formula, Atom):
+        return False
+    if isinstance(formula, Not):
+        return _branches(formula.part, not negated)
+    if isinstance(formula, Imply):
+        return (
+            not negated
+            or _branches(formula.condition, False)
+            or _branches(formula.consequence, True)
+        )
+    if isinstance(formula, And | Or):
+        if isinstance(formula, Or) != negated and len(formula.parts) > 1:
+            return True
+        return any(_branches(part, negated) for part in formula.parts)
+    if isinstance(formula, Exists) == negated:
+        return False
+    return _branches(formula.body, negated)
+
+
+def _free_variables(formula: Formula) -> set[str]:
+    if isinstance(formula, Atom):
+        return {arg for arg in formula.args if arg.startswith("?")}
+    if isinstance(formula, Not):
+        return _free_variables(formula.part)
+    if isinstance(formula, And | Or):
+        return set().union(*(_free_variables(part) for part in formula.parts))
+    if isinstance(formula, Imply):
+        return _free_variables(formula.condition) | _free_variables(formula.consequence)
+    return _free_variables(formula.body) - _names(formula.params)
 
 
 def _consistent(clause: Clause) -> bool:
