@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
+from strips_framework import builtins
 from strips_framework.errors import InputError
-from strips_framework.formats import native
 from strips_framework.formats.native import NativeLoader
 from strips_framework.logic.formulas import And, Atomic, Exists, Var, formula_to_str
 from strips_framework.logic.terms import Param
@@ -129,8 +129,8 @@ def test_robot_world_tasks_share_the_world_of_table_1() -> None:
     assert schema.source is not None and schema.source.path.endswith("world.inc")
 
 
-def test_loader_is_registered_by_the_module_hook() -> None:
-    assert native.strips_register_loaders() == [NativeLoader]
+def test_loader_is_registered_by_the_builtin_plugin() -> None:
+    assert builtins.strips_register_loaders() == [NativeLoader]
     assert (NativeLoader.name, NativeLoader.suffixes) == ("native", (".strips",))
 
 

@@ -71,9 +71,10 @@ class _ClashPlugin:
         return [_Clash]
 
 
-def test_duplicate_names_are_errors():
+def test_duplicate_names_are_errors_when_the_kind_is_looked_up():
+    registry = Registry(get_plugin_manager([_ClashPlugin()], load_entrypoints=False))
     with pytest.raises(PluginError, match="'means-ends' is registered twice"):
-        Registry(get_plugin_manager([_ClashPlugin()], load_entrypoints=False))
+        registry.names("strategy")
 
 
 class _Misspelled:

@@ -8,6 +8,7 @@ import sys
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from strips_framework import exit_codes
 from strips_framework.config import Config
@@ -17,7 +18,9 @@ from strips_framework.planner import Planner, is_pddl
 from strips_framework.plugins import KINDS
 from strips_framework.search.forward.budget import LimitReached
 from strips_framework.search.forward.result import ForwardResult
-from strips_framework.search.result import SearchResult
+
+if TYPE_CHECKING:
+    from strips_framework.search.result import SearchResult
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -82,7 +85,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     warnings.formatwarning = lambda message, *_: f"strips: warning: {message}\n"
     try:
-        config = Config.from_file(args.config) if getattr(args, "config", None) else None
+        config = Config.from_file(args.config) if getattr(args, "config", None) else Config.default()
+        if args.command == "solve":
+            domain, problem = _domain_and_problem(args.files, "solve")
+            if is_pddl(problem, domain):
+                config = config.for_pddl()
         planner = Planner.create(config)
         if args.command == "solve":
             return _solve(planner, args)
@@ -158,7 +165,6 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     from strips_framework.process_limits import enforced
 
     domain, problem = _domain_and_problem(args.files, "solve")
-    planner = planner.for_input(problem, domain)
     try:
         with enforced(planner.config.limits):
             result = planner.run(problem, domain)

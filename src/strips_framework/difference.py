@@ -14,7 +14,6 @@ from typing import ClassVar
 
 from attrs import field, frozen, validators
 
-from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.clauses import Clause
 from strips_framework.proving import ProofResult
 from strips_framework.search.node import Difference
@@ -33,8 +32,3 @@ class UncompletedProofDifference:
         # sorted() is stable: among clauses of one size, derivation order decides.
         unique.sort(key=lambda c: len(c.literals))
         return Difference(unique[: self.max_clauses], negated_goal)
-
-
-@hookimpl
-def strips_register_difference_extractors() -> list[type]:
-    return [UncompletedProofDifference]

@@ -1,7 +1,7 @@
 """Every hook a plugin can implement, in one place.
 
-Hooks *register implementation classes*; they are called once, when the plugin manager is
-built, never inside search or proving loops (a pluggy call costs microseconds). The core
+Hooks *register implementation classes*; each is called once, when the registry first
+looks up its kind, never inside search or proving loops (a pluggy call costs microseconds). The core
 keeps the classes in a :class:`~strips_framework.plugins.Registry`, the config picks one
 class of each kind by its ``name``, and the search calls the chosen objects directly.
 

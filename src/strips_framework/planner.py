@@ -22,14 +22,14 @@ from attrs import frozen
 from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.plugins import Registry
-from strips_framework.problem import Problem
-from strips_framework.proving import TheoremProver
-from strips_framework.search.result import SearchResult
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
     from strips_framework.pddl import PddlTask
+    from strips_framework.problem import Problem
+    from strips_framework.proving import TheoremProver
     from strips_framework.search.forward.result import ForwardResult
+    from strips_framework.search.result import SearchResult
 
 GROUND_TASK = "ground-task"
 PDDL_SUFFIX = ".pddl"
@@ -42,25 +42,25 @@ class Planner:
 
     @classmethod
     def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
-        """A planner whose config is checked at once: every name is registered and every
-        option valid, so mistakes show before any problem is read."""
+        """A planner whose config is checked at once: every component the strategy uses is
+        registered and its options valid, so mistakes show before any problem is read."""
         planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
-        for kind in planner.config.choices:
+        for kind in planner.kinds_used():
             planner.config.build(planner.registry, kind)
         return planner
+
+    def kinds_used(self) -> tuple[str, ...]:
+        """The components the configured strategy uses (only these are built, so a
+        forward search never loads the prover, and a means-ends search no heuristic)."""
+        if self.searches_ground_tasks:
+            return ("strategy", "heuristic")
+        return ("strategy", "prover", "difference", "relevance", "evaluator")
 
     @property
     def searches_ground_tasks(self) -> bool:
         """True when the configured strategy searches ground tasks (PDDL input only)."""
         strategy = self.registry.get("strategy", self.config.choices["strategy"].name)
         return getattr(strategy.cls, "works_on", "problem") == GROUND_TASK
-
-    def for_input(self, problem_path: Path, domain_path: Path | None = None) -> Planner:
-        """The planner for this input: PDDL input without a strategy in the config gets
-        the PDDL default strategy (see :meth:`Config.for_pddl`)."""
-        if is_pddl(problem_path, domain_path):
-            return attrs.evolve(self, config=self.config.for_pddl())
-        return self
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
@@ -82,8 +82,8 @@ class Planner:
         self, problem_path: Path, domain_path: Path | None = None
     ) -> SearchResult | ForwardResult:
         """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
-        solve it with the configured strategy, whichever kind it is (call it on
-        :meth:`for_input`'s planner to get the PDDL default strategy)."""
+        solve it with the configured strategy, whichever kind it is (a config's
+        :meth:`~Config.for_pddl` gives PDDL input its default strategy)."""
         started = time.perf_counter()
         if not is_pddl(problem_path, domain_path):
             if self.searches_ground_tasks:
@@ -97,7 +97,9 @@ class Planner:
         pddl = self.load_pddl(problem_path, domain_path)
         parsed = time.perf_counter()
         if not self.searches_ground_tasks:
-            from strips_framework.pddl import to_problem
+            # The submodule, not the package's function of the same name: importing the
+            # submodule anywhere rebinds ``strips_framework.pddl.to_problem`` to it.
+            from strips_framework.pddl.to_problem import to_problem
 
             return self.solve(to_problem(pddl))
         from strips_framework.grounding import ground

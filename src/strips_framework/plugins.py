@@ -3,7 +3,9 @@
 Builtin implementations are registered exactly like outside ones: each module in
 :data:`DEFAULT_PLUGINS` holds ``@hookimpl`` functions, as an installed distribution's
 entry-point module in the group ``strips_framework`` does. Nothing is loaded at import
-time; :func:`get_plugin_manager` builds a fresh manager on each call. Set
+time; :func:`get_plugin_manager` builds a fresh manager on each call, and the
+:class:`Registry` calls a kind's hook only when that kind is first looked up (a plugin
+module that imports its classes inside its hooks costs nothing until then). Set
 ``STRIPS_DISABLE_PLUGIN_AUTOLOAD=1`` to skip installed distributions (tests use it).
 """
 
@@ -20,14 +22,7 @@ from attrs import frozen
 from strips_framework import hookspecs
 from strips_framework.errors import PluginError
 
-DEFAULT_PLUGINS = (
-    "strips_framework.formats.native",
-    "strips_framework.difference",
-    "strips_framework.relevance",
-    "strips_framework.search.means_ends",
-    "strips_framework.search.model_astar",
-    "strips_framework.search.forward.plugin",
-)
+DEFAULT_PLUGINS = ("strips_framework.builtins",)
 
 #: Each kind of implementation, by its config key: the hook that registers it, and the
 #: words for it in messages (singular, plural).
@@ -108,45 +103,59 @@ class Registration:
 
 
 class Registry:
-    """Implementation classes by kind and name, as the hooks registered them."""
+    """Implementation classes by kind and name, as the hooks registered them; each kind's
+    hook is called the first time the kind is looked up."""
 
     def __init__(self, manager: pluggy.PluginManager) -> None:
-        distributions = {
-            id(plugin): dist.project_name for plugin, dist in manager.list_plugin_distinfo()
-        }
-        self._by_kind: dict[str, dict[str, Registration]] = {kind: {} for kind in KINDS}
-        for kind, (hook_name, words, _) in KINDS.items():
-            caller = getattr(manager.hook, hook_name)
-            for impl in reversed(caller.get_hookimpls()):  # registration order
-                for cls in impl.function() or ():
-                    name = getattr(cls, "name", None)
-                    if not isinstance(name, str) or not name:
-                        raise PluginError(
-                            f"plugin {impl.plugin_name!r} registered a {words} class "
-                            f"{cls.__qualname__} without a 'name' attribute"
-                        )
-                    known = self._by_kind[kind].get(name)
-                    if known is not None:
-                        raise PluginError(
-                            f"{words} {name!r} is registered twice: by {known.plugin!r} "
-                            f"and by {impl.plugin_name!r}"
-                        )
-                    self._by_kind[kind][name] = Registration(
-                        kind, name, cls, impl.plugin_name, distributions.get(id(impl.plugin))
+        self._manager = manager
+        self._by_kind: dict[str, dict[str, Registration]] = {}
+        self._distributions: dict[int, str] | None = None
+
+    def _kind(self, kind: str) -> dict[str, Registration]:
+        """The registrations of ``kind``, collected from its hook on first use."""
+        found = self._by_kind.get(kind)
+        if found is not None:
+            return found
+        if self._distributions is None:
+            self._distributions = {
+                id(plugin): dist.project_name
+                for plugin, dist in self._manager.list_plugin_distinfo()
+            }
+        hook_name, words, _ = KINDS[kind]
+        found = {}
+        caller = getattr(self._manager.hook, hook_name)
+        for impl in reversed(caller.get_hookimpls()):  # registration order
+            for cls in impl.function() or ():
+                name = getattr(cls, "name", None)
+                if not isinstance(name, str) or not name:
+                    raise PluginError(
+                        f"plugin {impl.plugin_name!r} registered a {words} class "
+                        f"{cls.__qualname__} without a 'name' attribute"
                     )
+                known = found.get(name)
+                if known is not None:
+                    raise PluginError(
+                        f"{words} {name!r} is registered twice: by {known.plugin!r} "
+                        f"and by {impl.plugin_name!r}"
+                    )
+                found[name] = Registration(
+                    kind, name, cls, impl.plugin_name, self._distributions.get(id(impl.plugin))
+                )
+        self._by_kind[kind] = found
+        return found
 
     @classmethod
     def from_plugins(cls, extra_plugins: Iterable[object] = ()) -> Registry:
         return cls(get_plugin_manager(extra_plugins))
 
     def names(self, kind: str) -> list[str]:
-        return sorted(self._by_kind[kind])
+        return sorted(self._kind(kind))
 
     def registrations(self, kind: str) -> list[Registration]:
-        return [self._by_kind[kind][name] for name in self.names(kind)]
+        return [self._kind(kind)[name] for name in self.names(kind)]
 
     def get(self, kind: str, name: str) -> Registration:
-        found = self._by_kind[kind].get(name)
+        found = self._kind(kind).get(name)
         if found is not None:
             return found
         words = KINDS[kind][1]

@@ -22,7 +22,6 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic
 from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
@@ -172,8 +171,3 @@ def _deleted_count(instance: OperatorInstance, facts: list[Atom]) -> int:
     wildcards match anything)."""
     patterns, _ = instance.effects()
     return sum(1 for fact in facts if any(may_delete(p, fact) for p in patterns))
-
-
-@hookimpl
-def strips_register_relevance_filters() -> list[type]:
-    return [AddListRelevance]

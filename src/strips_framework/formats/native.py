@@ -27,7 +27,6 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_framework.errors import InputError
-from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of
@@ -412,8 +411,3 @@ class NativeLoader:
             message = f"cannot read the file: {_reason(error)}"
             raise InputError(str(path), 1, None, message) from None
         return _Reader(str(path)).read(blocks)
-
-
-@hookimpl
-def strips_register_loaders() -> list[type]:
-    return [NativeLoader]

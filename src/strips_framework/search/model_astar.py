@@ -17,25 +17,24 @@ import heapq
 import itertools
 import warnings
 from collections.abc import Iterator
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from attrs import field, frozen, validators
 
-from strips_framework.hookspecs import hookimpl
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import Problem
-from strips_framework.proving import TheoremProver
-from strips_framework.search.components import (
-    DifferenceExtractor,
-    NodeEvaluator,
-    RelevanceFilter,
-)
-from strips_framework.search.goal_prover import GoalProver
-from strips_framework.search.limits import Limits
-from strips_framework.search.node import Goal, Node
-from strips_framework.search.result import EXHAUSTED, SOLVED, SearchResult
-from strips_framework.search.tree import LimitReached, SearchTree
-from strips_framework.world import WorldModel
+if TYPE_CHECKING:
+    from strips_framework.operators import OperatorInstance
+    from strips_framework.problem import Problem
+    from strips_framework.proving import TheoremProver
+    from strips_framework.search.components import (
+        DifferenceExtractor,
+        NodeEvaluator,
+        RelevanceFilter,
+    )
+    from strips_framework.search.goal_prover import GoalProver
+    from strips_framework.search.limits import Limits
+    from strips_framework.search.node import Node
+    from strips_framework.search.result import SearchResult
+    from strips_framework.world import WorldModel
 
 
 @frozen
@@ -57,6 +56,12 @@ class ModelAStarSearch:
         evaluator: NodeEvaluator,
         limits: Limits,
     ) -> SearchResult:
+        # Imported here, not at the top, so that registering the strategy stays cheap.
+        from strips_framework.search.goal_prover import GoalProver
+        from strips_framework.search.node import Goal
+        from strips_framework.search.result import EXHAUSTED, SOLVED
+        from strips_framework.search.tree import LimitReached, SearchTree
+
         if not evaluator.admissible:
             warnings.warn(
                 f"evaluator {evaluator.name!r} is not admissible: the plan A* finds with it "
@@ -110,6 +115,8 @@ class ModelAStarSearch:
         self, problem: Problem, goal_prover: GoalProver, model: WorldModel
     ) -> Iterator[OperatorInstance]:
         """Every ground instance whose precondition the prover proves in ``model``."""
+        from strips_framework.operators import OperatorInstance
+
         seen: set[OperatorInstance] = set()
         for schema in problem.operators:
             result = goal_prover.prove(model, schema.precondition, self.max_answers)
@@ -121,8 +128,3 @@ class ModelAStarSearch:
                     if instance.is_ground and instance not in seen:
                         seen.add(instance)
                         yield instance
-
-
-@hookimpl
-def strips_register_strategies() -> list[type]:
-    return [ModelAStarSearch]

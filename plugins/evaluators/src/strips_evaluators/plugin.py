@@ -1,21 +1,14 @@
 """Registers this distribution's node evaluators and state heuristics (entry point
-``evaluators`` in group ``strips_framework``)."""
+``evaluators`` in group ``strips_framework``).
+
+Each hook imports its classes when called; the registry calls a kind's hook only when
+that kind is looked up, so a forward search loads no node evaluator and a means-ends
+search no state heuristic."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from strips_evaluators.breadth_first import BreadthFirst
-from strips_evaluators.goal_count import GoalCount
-from strips_evaluators.goal_list_bound import GoalListBound
-from strips_evaluators.heuristics.additive import AdditiveHeuristic
-from strips_evaluators.heuristics.blind import BlindHeuristic
-from strips_evaluators.heuristics.ff import FFHeuristic
-from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
-from strips_evaluators.heuristics.hmax import MaxHeuristic
-from strips_evaluators.heuristics.lmcount import LandmarkCountHeuristic
-from strips_evaluators.heuristics.lmcut import LMCutHeuristic
-from strips_evaluators.paper import PaperEvaluator
 from strips_framework.hookspecs import hookimpl
 
 if TYPE_CHECKING:
@@ -24,11 +17,24 @@ if TYPE_CHECKING:
 
 @hookimpl
 def strips_register_evaluators() -> list[type[NodeEvaluator]]:
+    from strips_evaluators.breadth_first import BreadthFirst
+    from strips_evaluators.goal_count import GoalCount
+    from strips_evaluators.goal_list_bound import GoalListBound
+    from strips_evaluators.paper import PaperEvaluator
+
     return [PaperEvaluator, BreadthFirst, GoalCount, GoalListBound]
 
 
 @hookimpl
 def strips_register_heuristics() -> list[type[StateHeuristic]]:
+    from strips_evaluators.heuristics.additive import AdditiveHeuristic
+    from strips_evaluators.heuristics.blind import BlindHeuristic
+    from strips_evaluators.heuristics.ff import FFHeuristic
+    from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
+    from strips_evaluators.heuristics.hmax import MaxHeuristic
+    from strips_evaluators.heuristics.lmcount import LandmarkCountHeuristic
+    from strips_evaluators.heuristics.lmcut import LMCutHeuristic
+
     return [
         BlindHeuristic,
         GoalCountHeuristic,
