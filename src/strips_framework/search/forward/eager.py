@@ -106,8 +106,9 @@ class AStarSearch(EagerSearch):
 
 @frozen
 class WeightedAStarSearch(EagerSearch):
-    """Weighted A*: lowest g + weight * h first, then lowest h; plans cost at most
-    ``weight`` times the optimum with an admissible heuristic."""
+    """Weighted A*: lowest g + weight * h first, then lowest h, then first in.
+
+    With an admissible heuristic, plans cost at most ``weight`` times the optimum."""
 
     name: ClassVar[str] = "wastar"
     reopen: ClassVar[bool] = True
@@ -119,9 +120,10 @@ class WeightedAStarSearch(EagerSearch):
 
 @frozen
 class GreedySearch(EagerSearch):
-    """Eager greedy best-first search: lowest h first (FIFO among equals); with
-    ``preferred``, alternates with a list of states reached by preferred operators,
-    which gets ``boost`` extra turns whenever h reaches a new low."""
+    """Eager greedy best-first search: lowest h first, then first in.
+
+    With ``preferred``, alternates with a list of the states reached by preferred
+    operators, which gets ``boost`` extra turns whenever h reaches a new low."""
 
     name: ClassVar[str] = "gbfs"
     reopen: ClassVar[bool] = False

@@ -23,8 +23,9 @@ from strips_framework.search.forward.space import NO_PARENT
 
 @frozen
 class EnforcedHillClimbing(ForwardStrategy):
-    """Enforced hill-climbing: breadth-first search for a better state, then commit to
-    it; with ``preferred``, along the heuristic's helpful actions only. Incomplete."""
+    """Enforced hill-climbing (FF): breadth-first to a better state, then commit to it.
+
+    With ``preferred``, only along the heuristic's helpful actions. Incomplete."""
 
     name: ClassVar[str] = "ehc"
     complete: ClassVar[bool] = False
@@ -52,7 +53,7 @@ class EnforcedHillClimbing(ForwardStrategy):
                 state = states[number]
                 budget.check(run.expanded)
                 run.expanded += 1
-                for op in sorted(preferred) if self.preferred else applicable(state):
+                for op in sorted(set(preferred)) if self.preferred else applicable(state):
                     child = successor(state, op)
                     run.generated += 1
                     if child in ids:
