@@ -125,3 +125,18 @@ def test_lazy_search_evaluates_each_expanded_state_once(registry, tasks):
     result = search(registry, tasks["gripper-3"], "lazy-gbfs", "ff")
     statistics = result.statistics
     assert statistics.evaluated == statistics.expanded + 1  # the goal is evaluated, not expanded
+
+
+@pytest.mark.parametrize("heuristic", ["blind", "lmcut"])
+def test_astar_on_pddl_matches_breadth_first(registry, heuristic):
+    from pathlib import Path
+
+    from strips_framework.grounding import ground
+    from strips_framework.pddl import find_domain, load_task
+
+    problem = Path(__file__).resolve().parents[2] / "examples" / "pddl" / "blocksworld" / "p4.pddl"
+    task = ground(load_task(find_domain(problem), problem))
+    shortest = search(registry, task, "breadth-first")
+    optimal = search(registry, task, "astar", heuristic)
+    assert optimal.solved and len(optimal.plan) == len(shortest.plan) == optimal.cost
+    assert replay(task, optimal.plan) == optimal.cost
