@@ -5,10 +5,13 @@ from __future__ import annotations
 
 import math
 import time
+from pathlib import Path
 
 import pytest
 
+from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
+from strips_framework.pddl import find_domain, load_task
 from strips_framework.search.forward.budget import Budget, LimitReached
 from strips_framework.search.forward.result import ForwardResult
 from strips_framework.search.limits import Limits
@@ -129,11 +132,6 @@ def test_lazy_search_evaluates_each_expanded_state_once(registry, tasks):
 
 @pytest.mark.parametrize("heuristic", ["blind", "lmcut"])
 def test_astar_on_pddl_matches_breadth_first(registry, heuristic):
-    from pathlib import Path
-
-    from strips_framework.grounding import ground
-    from strips_framework.pddl import find_domain, load_task
-
     problem = Path(__file__).resolve().parents[2] / "examples" / "pddl" / "blocksworld" / "p4.pddl"
     task = ground(load_task(find_domain(problem), problem))
     shortest = search(registry, task, "breadth-first")
