@@ -97,9 +97,7 @@ class Planner:
         pddl = self.load_pddl(problem_path, domain_path)
         parsed = time.perf_counter()
         if not self.searches_ground_tasks:
-            # The submodule, not the package's function of the same name: importing the
-            # submodule anywhere rebinds ``strips_framework.pddl.to_problem`` to it.
-            from strips_framework.pddl.to_problem import to_problem
+            from strips_framework.pddl import to_problem
 
             return self.solve(to_problem(pddl))
         from strips_framework.grounding import ground

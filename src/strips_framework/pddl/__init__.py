@@ -19,7 +19,7 @@ __all__ = ["PddlTask", "find_domain", "load_task", "to_problem"]
 
 
 def to_problem(task: PddlTask) -> Problem:
-    """The framework problem of ``task`` (see :mod:`strips_framework.pddl.to_problem`)."""
-    from strips_framework.pddl.to_problem import to_problem as translate
+    """The framework problem of ``task`` (see :mod:`strips_framework.pddl.translation`)."""
+    from strips_framework.pddl.translation import to_problem as translate
 
     return translate(task)
