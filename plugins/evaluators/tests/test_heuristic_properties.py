@@ -219,3 +219,23 @@ def test_factoring_shared_preconditions_keeps_hmax_and_hadd(task_and_costs) -> N
     plain, factored = relax(task), relax(task, factor_sharing=2)
     for state in optimal:
         assert relaxed_values(factored, state) == relaxed_values(plain, state)
+
+
+@pytest.mark.parametrize("domain", ["depot", "transport"])
+def test_lmcut_stays_between_hmax_and_ff_on_larger_tasks(domain) -> None:
+    """States where LM-cut's incremental hmax moves operators back to a former supporter
+    (the second tasks of these domains have many)."""
+    if IPC is None:
+        pytest.skip("shared/bench/ipc not found")
+    problem = IPC / domain / "task02.pddl"
+    task = ground(load_task(find_domain(problem), problem))
+    estimators = {name: HEURISTICS[name]().for_task(task) for name in ("hmax", "lmcut", "ff")}
+    states, frontier = {task.init}, [task.init]
+    while frontier and len(states) < 400:
+        state = frontier.pop(0)
+        h = {name: estimator.estimate(state) for name, estimator in estimators.items()}
+        assert h["hmax"] <= h["lmcut"] <= h["ff"], task.facts_of(state)
+        for op in task.operators:
+            if op.applicable(state) and op.apply(state) not in states:
+                states.add(op.apply(state))
+                frontier.append(op.apply(state))

@@ -102,7 +102,8 @@ class LMCutEstimator:
         supported: list[list[int]],
     ) -> list[int]:
         """The operators whose supporter is reachable from ``start`` in the justification
-        graph without entering the goal zone, and that add a goal-zone fact."""
+        graph without entering the goal zone, and that add a goal-zone fact, each once
+        (an operator that got back a former supporter is on its list twice)."""
         add, only_effect = self.relaxed.add, self.only_effect
         cut = []
         seen = bytearray(goal_zone)  # goal-zone facts are never entered
@@ -132,7 +133,7 @@ class LMCutEstimator:
                         if not seen[effect]:
                             seen[effect] = 1
                             stack.append(effect)
-        return cut
+        return list(dict.fromkeys(cut))
 
     def _lower_hmax(
         self,
