@@ -46,14 +46,15 @@ class LandmarkCountEstimator:
 
     def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
         """Preferred: applicable operators that achieve a landmark that is required again,
-        or not accepted and with its necessary landmarks true in the state."""
+        or one not accepted whose predecessors (the landmarks in its label) all are, as
+        Fast Downward prefers achievers of such "interesting" landmarks."""
         value, missing, again = self._count(state)
         if not missing and not again:
             return value, []
         graph, operator = self.graph, self.operator
         pre_masks, neg_masks = self.pre_masks, self.neg_masks
-        necessary = graph.necessary
-        ready = [fact for fact in facts_in(missing) if necessary[fact] & state == necessary[fact]]
+        label = graph.label
+        ready = [fact for fact in facts_in(missing) if label[fact] & missing == 1 << fact]
         preferred = {
             operator[op]
             for fact in ready + facts_in(again)
