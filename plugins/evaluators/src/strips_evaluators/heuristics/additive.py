@@ -87,9 +87,11 @@ class AdditiveEstimator:
 
 @frozen
 class AdditiveHeuristic:
-    """hadd: the sum of the goal facts' relaxed costs, each the cheapest achiever's cost
-    plus the sum of its preconditions' costs. Not admissible. O(relaxed task size) per
-    state (a Dijkstra over facts with a binary heap); no preferred operators (use ``ff``)."""
+    """hadd: the sum of the goal facts' relaxed costs. Not admissible.
+
+    Each fact costs its cheapest achiever's cost plus the sum of its preconditions'
+    costs, so shared subgoals are paid once per use. O(relaxed task size) per state (a
+    bucket-queue Dijkstra over facts); no preferred operators (``ff`` has them)."""
 
     name: ClassVar[str] = "hadd"
     admissible: ClassVar[bool] = False

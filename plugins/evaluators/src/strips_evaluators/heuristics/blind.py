@@ -25,9 +25,11 @@ class BlindEstimator:
 
 @frozen
 class BlindHeuristic:
-    """0 in goal states, else the cheapest operator's cost (1 on unit-cost tasks):
-    a non-goal state needs at least one step. Admissible and consistent; A* with it is
-    uniform-cost search, the baseline the informed heuristics are measured against."""
+    """Blind: 0 at a goal, else the cheapest operator's cost. Admissible, no guidance.
+
+    A non-goal state needs at least one more step, so the cheapest operator's cost (1 on
+    unit-cost tasks) is a lower bound; it is also consistent. A* with it is uniform-cost
+    search, the baseline the informed heuristics are measured against."""
 
     name: ClassVar[str] = "blind"
     admissible: ClassVar[bool] = True

@@ -73,10 +73,12 @@ class FFEstimator:
 
 @frozen
 class FFHeuristic:
-    """hFF: the cost of a relaxed plan built from hadd best supporters, with the relaxed
-    plan's applicable operators as preferred operators. Not admissible, but much closer
-    to the real cost than hadd since each operator counts once. O(relaxed task size) per
-    state (the hadd exploration, then a walk over the relaxed plan)."""
+    """hFF: cost of a relaxed plan from hadd best supporters; preferred operators.
+
+    As Fast Downward's ``ff()``: each operator of the relaxed plan counts once, so it is
+    much closer to the real cost than hadd, though not admissible. Preferred operators are
+    the relaxed plan's operators applicable in the state. O(relaxed task size) per state
+    (the hadd exploration, then a walk over the relaxed plan)."""
 
     name: ClassVar[str] = "ff"
     admissible: ClassVar[bool] = False

@@ -22,9 +22,11 @@ class GoalCountEstimator:
 
 @frozen
 class GoalCountHeuristic:
-    """The number of goal facts false in the state: one bit count per state, so the
-    cheapest informed heuristic. Not admissible (one operator can add several goal facts,
-    and operator costs are ignored); never detects dead ends; no preferred operators."""
+    """Goal count: the goal facts false in the state. Not admissible.
+
+    One bit count per state, so the cheapest informed heuristic. It overestimates when one
+    operator adds several goal facts and ignores operator costs; it never detects dead
+    ends and has no preferred operators."""
 
     name: ClassVar[str] = "goal-count"
     admissible: ClassVar[bool] = False

@@ -118,11 +118,12 @@ class MaxEstimator:
 
 @frozen
 class MaxHeuristic:
-    """hmax: the costliest goal fact's relaxed cost, each fact costing its cheapest
-        achiever's cost plus the achiever's costliest precondition. Admissible and consistent,
-        but weak (it sees only the hardest goal). O(relaxed task size) per state: breadth-first
-        layers stopping at the last goal fact on unit-cost tasks, a binary-heap Dijkstra
-    otherwise; no preferred operators."""
+    """hmax: the costliest goal fact in the delete relaxation. Admissible.
+
+    Each fact costs its cheapest achiever's cost plus the achiever's costliest
+    precondition. Consistent too, but weak: it sees only the hardest goal. O(relaxed task
+    size) per state: breadth-first layers that stop at the last goal fact on unit-cost
+    tasks, a bucket-queue Dijkstra otherwise; no preferred operators."""
 
     name: ClassVar[str] = "hmax"
     admissible: ClassVar[bool] = True

@@ -89,12 +89,13 @@ class LandmarkCountEstimator:
 
 @frozen
 class LandmarkCountHeuristic:
-    """lmcount: the landmarks (Zhu & Givan, from the initial state) still to be reached,
-    plus those reached but required again, each weighing its cheapest achiever's cost.
-    Acceptance is inferred from the state through the landmark labels (no search-path
-    memory). Not admissible. Preferred operators: applicable achievers of the next
-    landmarks. O(state facts + missing landmarks) big-int operations per state, after a
-    one-off label propagation."""
+    """lmcount: landmarks still to reach or required again; preferred operators.
+
+    Landmarks are Zhu & Givan's, from the initial state; each weighs its cheapest
+    achiever's cost. Acceptance is inferred from the state through the landmark labels
+    (no search-path memory). Not admissible. Preferred operators: applicable achievers of
+    the next landmarks. O(state facts + missing landmarks) big-int operations per state,
+    after a one-off label propagation."""
 
     name: ClassVar[str] = "lmcount"
     admissible: ClassVar[bool] = False

@@ -185,10 +185,11 @@ class LMCutEstimator:
 
 @frozen
 class LMCutHeuristic:
-    """LM-cut: the sum of the costs of cost-disjoint action landmarks found by repeated
-    hmax cuts. Admissible, and the strongest bound here (always >= hmax); the heuristic of
-    choice for optimal A*. Each state costs a few hmax explorations (one per landmark,
-    incremental after the first); no preferred operators."""
+    """LM-cut (Helmert & Domshlak 2009): sum of cost-disjoint landmark costs. Admissible.
+
+    The action landmarks are found by repeated hmax cuts. Always >= hmax, and the
+    heuristic of choice for optimal A*. Each state costs a few hmax explorations (one per
+    landmark, incremental after the first); no preferred operators."""
 
     name: ClassVar[str] = "lmcut"
     admissible: ClassVar[bool] = True
