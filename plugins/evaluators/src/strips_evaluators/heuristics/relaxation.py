@@ -112,9 +112,8 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
 
 
 def start_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[int], list[float]]:
-    """The facts an exploration starts from (those of ``state`` and the always-true fact,
-    ascending: as cost-0 queue keys they already form a heap) and the fact costs, 0 for
-    them and ``math.inf`` for the others."""
+    """The facts an exploration starts from (those of ``state`` and the always-true fact:
+    the cost-0 bucket) and the fact costs, 0 for them and ``math.inf`` for the others."""
     start = facts_in(state)
     start.append(relaxed.true_fact)
     cost: list[float] = [math.inf] * relaxed.num_facts
