@@ -110,10 +110,11 @@ def test_anchors_not_installed_or_on_native_problems_are_skipped_with_a_note(
     ))
     assert isinstance(matrix.configs[1], AnchorConfig)
     assert [run.config.name for run in matrix.runs()] == ["ours", "ours"]
-    assert matrix.notes() == [
-        f"configuration 'pp' skipped: pyperplan is not installed under {tmp_path / 'no-anchors'} "
+    home = tmp_path / "no-anchors"
+    assert matrix.notes() == [(
+        f"configuration 'pp' skipped: pyperplan is not installed under {home} "
         "(set STRIPS_ANCHORS to its virtual environment)"
-    ]
+    )]
     fake_home = tmp_path / "anchors"
     (fake_home / "bin").mkdir(parents=True)
     (fake_home / "bin" / "pyperplan").write_text("")

@@ -93,8 +93,8 @@ def bench(args: argparse.Namespace) -> int:
         sink.close()
     counts = ", ".join(f"{status} {count}" for status, count in sorted(tally.items()))
     print(f"{sum(tally.values())} runs finished: {counts or 'none'}", file=sys.stderr)
-    if isinstance(sink, RowList):
-        found = tasks(sink.rows)
+    if not matrix_form:  # the quick form shows its results at once
+        found = tasks(sink.rows if isinstance(sink, RowList) else read_rows(output))
         header, rows = per_problem_rows(found)
         print(markdown(header, rows) + "\n\n" + markdown(COLUMNS, summary_rows(found)))
     return 1 if tally["lost"] else 0

@@ -17,7 +17,12 @@ from typing import Any, Protocol
 from attrs import frozen
 from rich.console import Console
 from rich.progress import (
-    BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn,
+    BarColumn,
+    MofNCompleteColumn,
+    Progress,
+    TextColumn,
+    TimeElapsedColumn,
+    TimeRemainingColumn,
 )
 
 from strips_framework.bench.isolation import LiveGroups
@@ -82,7 +87,7 @@ class DaskExecutor:
                 for future in dask_completed(futures):
                     try:
                         yield Completed(futures[future], future.result())
-                    except Exception as error:  # a task the cluster gave up on (KilledWorker)
+                    except Exception as error:  # noqa: BLE001 -- a task the cluster gave up on (KilledWorker)
                         yield Completed(futures[future], None, f"{type(error).__name__}: {error}")
             finally:
                 client.cancel(list(futures))
@@ -115,9 +120,14 @@ def run_matrix(
                     tally["lost"] += 1
                     bar.console.print(f"lost {completed.spec.key}: {completed.lost}")
                 elif sink.write(completed.row):
-                    tally[completed.row["status"]] += 1
+                    tally[_outcome(completed.row)] += 1
                 failed = sum(tally[status] for status in FAILURES)
                 bar.update(task, advance=1, solved=tally[SOLVED], failed=failed)
         finally:
             results.close()
     return tally
+
+
+def _outcome(row: dict[str, Any]) -> str:
+    """The row's status, except that a plan the validator rejected counts as invalid."""
+    return "invalid" if row["valid"] is False else row["status"]

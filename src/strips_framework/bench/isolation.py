@@ -9,21 +9,18 @@ to files in the run's folder, so a chatty child cannot block on a full pipe.
 
 from __future__ import annotations
 
-import ctypes
 import os
-import resource
 import signal
 import subprocess
 import sys
 import threading
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from attrs import frozen
 
 POLL_SECONDS = 0.02
-PR_SET_PDEATHSIG = 1
 
 
 @frozen
@@ -64,13 +61,21 @@ class LiveGroups:
                 _kill_group(group)
 
 
-def _limit_child(memory_bytes: int) -> Callable[[], None]:
-    def apply() -> None:
-        resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
-        if sys.platform == "linux":
-            ctypes.CDLL(None).prctl(PR_SET_PDEATHSIG, signal.SIGKILL)
+#: Sets the limits in a fresh interpreter, then becomes the command (``exec``): a
+#: ``preexec_fn`` would do the same in the forked child, but is unsafe with threads.
+LIMITER = """
+import ctypes, os, resource, signal, sys
+memory = int(sys.argv[1])
+resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+if sys.platform == "linux":
+    ctypes.CDLL(None).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+os.execvp(sys.argv[2], sys.argv[2:])
+"""
 
-    return apply
+
+def limited(command: Sequence[str], memory_mib: int) -> list[str]:
+    """``command`` under an address-space limit of ``memory_mib``."""
+    return [sys.executable, "-c", LIMITER, str(memory_mib * 1024 * 1024), *command]
 
 
 def _kill_group(group: int) -> None:
@@ -93,8 +98,8 @@ def run_limited(
     started = time.monotonic()
     with out_path.open("wb") as out, err_path.open("wb") as err:
         child = subprocess.Popen(
-            command, cwd=folder, env=dict(env), stdin=subprocess.DEVNULL, stdout=out, stderr=err,
-            start_new_session=True, preexec_fn=_limit_child(memory_mib * 1024 * 1024),
+            limited(command, memory_mib), cwd=folder, env=dict(env), stdin=subprocess.DEVNULL,
+            stdout=out, stderr=err, start_new_session=True,
         )
     if live is not None:
         live.add(child.pid)

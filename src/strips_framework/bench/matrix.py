@@ -31,7 +31,11 @@ from attrs import frozen
 
 from strips_framework.bench import anchors
 from strips_framework.bench.configs import (
-    PLACEHOLDERS, AnchorConfig, CommandConfig, Configuration, PlannerConfig,
+    PLACEHOLDERS,
+    AnchorConfig,
+    CommandConfig,
+    Configuration,
+    PlannerConfig,
 )
 from strips_framework.bench.problems import ProblemFile, expand_problem_set
 from strips_framework.config import COMPONENTS, DEFAULT_CHOICES, Config

@@ -12,9 +12,9 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after choosing the backend)
+import matplotlib.pyplot as plt
 
-from strips_framework.bench.summary import Task, configs  # noqa: E402
+from strips_framework.bench.summary import Task, configs
 
 FORMATS = ("png", "svg")
 METRICS = {"time": "time (s)", "expansions": "expansions"}

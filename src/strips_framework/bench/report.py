@@ -9,7 +9,12 @@ from typing import Any
 
 from strips_framework.bench import plots
 from strips_framework.bench.summary import (
-    COLUMNS, configs, markdown, per_problem_rows, summary_rows, tasks,
+    COLUMNS,
+    configs,
+    markdown,
+    per_problem_rows,
+    summary_rows,
+    tasks,
 )
 from strips_framework.errors import ConfigError
 
@@ -38,10 +43,12 @@ def write_report(
     page = [
         f"# Benchmark report: {source.name}",
         "",
-        f"{len(rows)} runs, {len({t.problem for t in found})} problems, "
-        f"{len(names)} configurations; time limit {time_limit:g} s.",
-        "A problem counts as solved when every repetition found a plan that the validator "
-        "did not reject. Times are the planner's own where it reports one, else wall clock.",
+        (
+            f"{len(rows)} runs, {len({t.problem for t in found})} problems, "
+            f"{len(names)} configurations; time limit {time_limit:g} s. A problem counts as "
+            "solved when every repetition found a plan that the validator did not reject. "
+            "Times are the planner's own where it reports one, else wall clock."
+        ),
         "",
         summary,
         "",
