@@ -25,7 +25,7 @@ from __future__ import annotations
 import itertools
 import tomllib
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 from attrs import frozen
 
@@ -161,7 +161,7 @@ class _Reader:
         self.source, self.base = source, base
         self.registry = Registry.from_plugins()
 
-    def fail(self, path: str, message: str) -> None:
+    def fail(self, path: str, message: str) -> NoReturn:
         raise ConfigError(f"{self.source}: '{path}': {message}")
 
     def expect(self, value: object, kind: type | tuple[type, ...], path: str, what: str) -> None:
@@ -201,7 +201,6 @@ class _Reader:
             return tomllib.loads(file.read_text(encoding="utf-8"))
         except (OSError, tomllib.TOMLDecodeError) as error:
             self.fail(path, f"cannot read the config {file}: {error}")
-        raise AssertionError  # fail() raised
 
     def checked(self, name: str, data: dict[str, Any], path: str) -> PlannerConfig:
         """A planner configuration, checked now so that no run fails on a typo."""
@@ -242,8 +241,8 @@ class _Reader:
 
     def named_config(self, name: str, table: object) -> Configuration:
         path = f"configs.{name}"
-        self.expect(table, dict, path, "a table")
-        assert isinstance(table, dict)
+        if not isinstance(table, dict):
+            self.fail(path, f"expected a table, got {table!r}")
         kinds = [key for key in CONFIG_KINDS if key in table]
         if len(kinds) > 1:
             self.fail(path, f"give one of {', '.join(CONFIG_KINDS)}, not {' and '.join(kinds)}")

@@ -78,14 +78,13 @@ def scatter(
     one = [(x or ceiling, y or ceiling) for x, y in pairs if bool(x) != bool(y)]
     figure, axes = plt.subplots(figsize=(5.5, 5.5))
     axes.plot([floor, ceiling], [floor, ceiling], color="grey", linewidth=1, label="equal")
-    for line in (axes.axhline, axes.axvline):
-        line(ceiling, color="red", linestyle=":", linewidth=1)
-    axes.annotate("unsolved", (floor * 1.1, ceiling * 1.08), color="red", fontsize="small")
+    axes.axhline(ceiling, color="red", linestyle=":", linewidth=1, label="unsolved (the limit)")
+    axes.axvline(ceiling, color="red", linestyle=":", linewidth=1)
     if both:
         axes.scatter(*zip(*both, strict=True), s=28, label=f"both solved ({len(both)})")
     if one:
         axes.scatter(*zip(*one, strict=True), s=36, marker="x", color="red",
-                     label=f"one unsolved, at the limit ({len(one)})")
+                     label=f"solved by one only ({len(one)})")
     axes.set_xscale("log")
     axes.set_yscale("log")
     axes.set_xlim(floor, ceiling * 1.5)
@@ -94,5 +93,5 @@ def scatter(
     axes.set_ylabel(f"{second}: {METRICS[metric]}")
     axes.set_title(f"{METRICS[metric].split(' ')[0].capitalize()} per problem (log-log)")
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(loc="upper left", fontsize="small")
+    axes.legend(loc="best", fontsize="small")
     return _save(figure, stem)
