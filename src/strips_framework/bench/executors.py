@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import uuid
 from collections import Counter
-from collections.abc import Iterator, Sequence
+from collections.abc import Generator, Sequence
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from typing import Any, Protocol
 
@@ -28,6 +28,7 @@ from rich.progress import (
 from strips_framework.bench.isolation import LiveGroups
 from strips_framework.bench.matrix import RunSpec
 from strips_framework.bench.runner import FAILURES, SOLVED, execute
+from strips_framework.errors import ConfigError
 
 
 @frozen
@@ -40,8 +41,8 @@ class Completed:
 
 
 class Executor(Protocol):
-    def results(self, specs: Sequence[RunSpec]) -> Iterator[Completed]:
-        """Runs as they complete; closing the iterator stops the rest."""
+    def results(self, specs: Sequence[RunSpec]) -> Generator[Completed, None, None]:
+        """Runs as they complete; closing the generator stops the rest."""
 
 
 class Sink(Protocol):
@@ -56,7 +57,7 @@ class LocalExecutor:
 
     jobs: int = 1
 
-    def results(self, specs: Sequence[RunSpec]) -> Iterator[Completed]:
+    def results(self, specs: Sequence[RunSpec]) -> Generator[Completed, None, None]:
         live = LiveGroups()
         pool = ThreadPoolExecutor(self.jobs, thread_name_prefix="strips-bench")
         futures = {pool.submit(execute, spec, live): spec for spec in specs}
@@ -74,11 +75,15 @@ class DaskExecutor:
 
     address: str
 
-    def results(self, specs: Sequence[RunSpec]) -> Iterator[Completed]:
+    def results(self, specs: Sequence[RunSpec]) -> Generator[Completed, None, None]:
         from distributed import Client
         from distributed import as_completed as dask_completed
 
-        with Client(self.address, timeout="20s") as client:
+        try:
+            client = Client(self.address, timeout="20s")
+        except (OSError, TimeoutError) as error:
+            raise ConfigError(f"--scheduler {self.address}: cannot connect: {error}") from None
+        with client:
             futures = {
                 client.submit(execute, spec, key=f"strips-bench-{uuid.uuid4().hex}", pure=False): spec
                 for spec in specs

@@ -66,6 +66,7 @@ class RunSpec:
     repetition: int
     seed: int
     limits: RunLimits
+    position: int = 0  # in the matrix's order, which reports keep
 
     @property
     def key(self) -> str:
@@ -125,12 +126,16 @@ class Matrix:
 
     def runs(self) -> list[RunSpec]:
         """Every run, problem-major so that early results cover every configuration."""
-        return [
-            RunSpec(problem, config, repetition, self.seed + repetition, self.limits)
+        combinations = [
+            (problem, config, repetition)
             for problem in self.problems
             for repetition in range(self.repetitions)
             for config in self.configs
             if config.accepts(problem) and config.missing() is None
+        ]
+        return [
+            RunSpec(problem, config, repetition, self.seed + repetition, self.limits, position)
+            for position, (problem, config, repetition) in enumerate(combinations)
         ]
 
     def notes(self) -> list[str]:

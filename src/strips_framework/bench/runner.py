@@ -71,6 +71,7 @@ def _base_row(spec: RunSpec) -> dict[str, Any]:
         "problem_set": spec.problem.problem_set,
         "config": spec.config.name,
         "repetition": spec.repetition,
+        "position": spec.position,
         "seed": spec.seed,
         "limits": {"time": spec.limits.time, "memory_mib": spec.limits.memory},
         "config_spec": spec.config.describe(),

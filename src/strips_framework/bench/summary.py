@@ -44,9 +44,10 @@ def _median(values: list[Any]) -> float | None:
 
 
 def tasks(rows: Sequence[dict[str, Any]]) -> list[Task]:
-    """One outcome per (problem, configuration), in the order of first appearance."""
+    """One outcome per (problem, configuration), in the matrix's order (rows finish in
+    any order)."""
     grouped: dict[tuple[str, str], list[dict[str, Any]]] = defaultdict(list)
-    for row in rows:
+    for row in sorted(rows, key=lambda row: row.get("position", len(rows))):
         grouped[row["problem"], row["config"]].append(row)
     found = []
     for (problem, config), runs in grouped.items():
