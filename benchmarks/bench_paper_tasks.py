@@ -25,6 +25,8 @@ REGISTRY = Registry.from_plugins()
 COMBINATIONS = list(itertools.product(
     REGISTRY.names("strategy"), REGISTRY.names("prover"), REGISTRY.names("evaluator")
 ))
+pytestmark = pytest.mark.filterwarnings("ignore:evaluator .* is not admissible")
+
 #: Nodes per strategy: means-ends analysis solves every task in under 350 nodes; forward
 #: A* needs some 760 nodes and 10 s on the light task, so its cases time its first 40.
 NODES = {"means-ends": 350, "astar": 40}
