@@ -3,13 +3,17 @@
     python fake_planner.py MODE PROBLEM PLAN
 
 MODE: ``solve`` (writes the plan of tests/data/push-one-box.strips, prints
-``expanded: 3``), ``slow-solve`` (the same after a second), ``crash`` (aborts: SIGABRT), ``hang`` (sleeps forever),
-``hog`` (allocates memory until the limit stops it), ``unsolvable`` (exit code 11).
+``expanded: 3``), ``slow-solve`` (the same after a second), ``crash`` (aborts: SIGABRT),
+``hang`` (sleeps forever), ``hog`` (allocates memory until the limit stops it), ``unsolvable`` (exit code 11),
+``json`` (the plan, and a result as ``strips solve --json`` prints it for PDDL tasks).
 """
 
+import json
 import os
 import sys
 import time
+
+PLAN = ["(goto a b)", "(push BOX1 b c)"]
 
 
 def main() -> None:
@@ -28,8 +32,13 @@ def main() -> None:
     if mode == "slow-solve":
         time.sleep(1)
     with open(plan, "w", encoding="utf-8") as out:
-        out.write("(goto a b)\n(push BOX1 b c)\n; cost = 2 (unit cost)\n")
-    print("expanded: 3")
+        out.write("\n".join(PLAN) + "\n; cost = 2 (unit cost)\n")
+    if mode == "json":
+        statistics = {"expanded": 5, "parse_seconds": 0.5, "ground_seconds": 0.25,
+                      "search_seconds": 0.25}
+        print(json.dumps({"status": "solved", "plan": PLAN, "statistics": statistics}))
+    else:
+        print("expanded: 3")
 
 
 if __name__ == "__main__":

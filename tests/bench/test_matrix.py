@@ -21,11 +21,11 @@ def test_product_and_named_configs_expand_to_runs(write_matrix, tmp_path):
         "repetitions = 2\nseed = 10\n" + PROBLEMS
         + '[product]\nbase = "base.toml"\nevaluator = ["paper", "goal-count"]\n'
         + 'strategy = ["means-ends"]\n'
-        + '[configs.optimal]\nstrategy = "astar"\nevaluator = "breadth-first"\n'
+        + '[configs.shallow]\nstrategy = {name = "means-ends", max_goals = 3}\n'
         + f"[configs.fake]\n{fake('solve')}\n"
     ))
     names = [config.name for config in matrix.configs]
-    assert names == ["paper", "goal-count", "optimal", "fake"]
+    assert names == ["paper", "goal-count", "shallow", "fake"]
     paper, goal_count = matrix.configs[:2]
     assert isinstance(paper, PlannerConfig) and isinstance(matrix.configs[3], CommandConfig)
     # the base's options stay with the class they belong to; its limits stay everywhere
@@ -37,6 +37,19 @@ def test_product_and_named_configs_expand_to_runs(write_matrix, tmp_path):
     assert len({run.key for run in runs}) == len(runs)
     assert {(run.repetition, run.seed) for run in runs} == {(0, 10), (1, 11)}
     assert matrix.limits.time == 60.0 and matrix.limits.memory == 2048
+
+
+def test_product_names_say_what_varies(write_matrix):
+    matrix = Matrix.from_file(write_matrix(
+        PROBLEMS + '[product]\nprover = ["resolution"]\n'
+        + 'evaluator = ["paper", {name = "paper", goal_weight = 2.0}]\n'
+        + 'strategy = ["means-ends", {name = "means-ends", max_goals = 4}]\n'
+    ))
+    assert [config.name for config in matrix.configs] == [
+        "paper+means-ends", "paper+means-ends(max_goals=4)",
+        "paper(goal_weight=2.0)+means-ends", "paper(goal_weight=2.0)+means-ends(max_goals=4)",
+    ]
+    assert matrix.configs[3].data["strategy"] == {"name": "means-ends", "max_goals": 4}
 
 
 @pytest.mark.parametrize(("body", "message"), [

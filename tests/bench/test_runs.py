@@ -68,11 +68,13 @@ one = ["{PUSH_ONE_BOX}"]
 {fake("unsolvable")}
 [configs.fake-solver]
 {fake("solve")}
+[configs.json-solver]
+{fake("json")}
 """)
     out = tmp_path / "results.jsonl"
     assert main(["bench", str(matrix), "-o", str(out), "--jobs", "2", "--no-progress"]) == 0
     rows = {row["config"]: row for row in read_rows(out)}
-    assert len(rows) == 5, rows.keys()
+    assert len(rows) == 6, rows.keys()
     assert rows["crash"]["status"] == "crash"
     assert rows["crash"]["cause"].startswith("killed by SIGABRT")
     assert rows["hang"]["status"] == "timeout"
@@ -88,6 +90,9 @@ one = ["{PUSH_ONE_BOX}"]
     )
     assert fake_solver["valid"] is True  # its plan replays in the simulator
     assert fake_solver["config_spec"]["kind"] == "command"
+    json_solver = rows["json-solver"]  # figures from the JSON, phases summed
+    assert (json_solver["expanded"], json_solver["planner_seconds"]) == (5, 1.0)
+    assert json_solver["valid"] is True
 
 
 def test_an_invalid_plan_is_recorded_as_such(write_matrix, tmp_path, capsys):

@@ -112,14 +112,24 @@ def _measurements(
     return {
         "exit_code": outcome.exit_code,
         "wall_seconds": round(outcome.wall_seconds, 4),
-        "planner_seconds": statistics.get("seconds"),
+        "planner_seconds": _planner_seconds(statistics),
         "proving_seconds": statistics.get("proving_seconds"),
         "expanded": expanded,
         "peak_memory_mib": round(outcome.peak_memory_kib / 1024, 1),
         "planner_status": (payload or {}).get("status"),
+        "statistics": statistics or None,
         "plan": steps,
         "plan_length": len(steps) if steps is not None else None,
     }
+
+
+def _planner_seconds(statistics: dict[str, Any]) -> float | None:
+    """The planner's own time: its ``seconds``, else the sum of its phases
+    (``parse_seconds``, ``ground_seconds``, ``search_seconds`` of forward search)."""
+    if "seconds" in statistics:
+        return statistics["seconds"]
+    phases = [v for k, v in statistics.items() if k.endswith("_seconds") and k != "proving_seconds"]
+    return round(sum(phases), 4) if phases else None
 
 
 def _classify(
