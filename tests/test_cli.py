@@ -99,29 +99,6 @@ def test_validate_replays_a_plan_file_in_the_simulator(tmp_path, capsys):
     assert "the goal fails in the final state" in capsys.readouterr().out
 
 
-def test_bench_runs_every_combination_and_checks_plans(tmp_path, capsys):
-    problem = Path(__file__).resolve().parent / "data" / "push-one-box.strips"
-    out = tmp_path / "runs.csv"
-    args = ["bench", str(problem), "--strategies", "means-ends,model-astar",
-            "--evaluators", "breadth-first,goal-count", "--csv", str(out)]
-    assert main(args) == 0
-    table = capsys.readouterr().out.splitlines()
-    assert table[0].startswith("| problem | strategy | evaluator | prover | status |")
-    assert len(table) == 2 + 4
-    rows = out.read_text().splitlines()
-    assert len(rows) == 1 + 4
-    assert all(",solved,2,True," in row for row in rows[1:])
-
-
-def test_bench_keeps_the_options_of_the_configs_own_choices(tmp_path, capsys):
-    problem = Path(__file__).resolve().parent / "data" / "push-one-box.strips"
-    config = tmp_path / "strips.toml"
-    config.write_text('[strategy]\nname = "means-ends"\nmax_goals = 1\n')
-    assert main(["bench", str(problem), "--config", str(config)]) == 0
-    row = capsys.readouterr().out.splitlines()[2]
-    assert "| means-ends | paper | resolution | exhausted |" in row  # no room for subgoals
-
-
 def test_prove_names_a_missing_file(tmp_path, capsys):
     assert main(["prove", str(tmp_path / "none.p")]) == 2
     err = capsys.readouterr().err

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from strips_framework import exit_codes
+from strips_framework.bench import command as bench_command
 from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
@@ -66,25 +67,21 @@ def _parser() -> argparse.ArgumentParser:
         "plan: one step a line, ';' comments",
     )
 
-    bench = commands.add_parser(
-        "bench", help="solve problems with every strategy x evaluator x prover; print a table"
-    )
-    bench.add_argument("problems", type=Path, nargs="+", help="problem files")
-    bench.add_argument("--config", type=Path, help="base config (limits, options)")
-    bench.add_argument("--strategies", help="comma-separated names (default: the config's)")
-    bench.add_argument("--evaluators", help="comma-separated names (default: the config's)")
-    bench.add_argument("--provers", help="comma-separated names (default: the config's)")
-    bench.add_argument("--all", action="store_true", help="every registered name of each kind")
-    bench.add_argument("--csv", type=Path, help="also write the runs as CSV")
+    bench_command.add_parser(commands)
 
     commands.add_parser("plugins", help="list the registered implementations and options")
     return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = _parser().parse_args(argv)
+    argv = list(sys.argv[1:] if argv is None else argv)
     warnings.formatwarning = lambda message, *_: f"strips: warning: {message}\n"
     try:
+        if argv[:2] == ["bench", "report"]:
+            return bench_command.report(argv[2:])
+        args = _parser().parse_args(argv)
+        if args.command == "bench":
+            return bench_command.bench(args)
         config = Config.from_file(args.config) if getattr(args, "config", None) else Config.default()
         if args.command == "solve":
             domain, problem = _domain_and_problem(args.files, "solve")
@@ -97,8 +94,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _prove(planner, args)
         if args.command == "validate":
             return _validate(planner, args)
-        if args.command == "bench":
-            return _bench(planner, args)
         return _plugins(planner)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
@@ -263,30 +258,6 @@ def _validate(planner: Planner, args: argparse.Namespace) -> int:
     outcome = replay(planner.load(problem), steps)
     print(outcome.message)
     return exit_codes.SOLVED if outcome.valid else exit_codes.INVALID_PLAN
-
-
-def _bench(planner: Planner, args: argparse.Namespace) -> int:
-    from strips_framework.bench import markdown_table, run_matrix, write_csv
-
-    def names(kind: str, given: str | None) -> list[str]:
-        if given:
-            return [name.strip() for name in given.split(",") if name.strip()]
-        if args.all:
-            return planner.registry.names(kind)
-        return [planner.config.choices[kind].name]
-
-    runs = run_matrix(
-        planner.config,
-        args.problems,
-        names("strategy", args.strategies),
-        names("evaluator", args.evaluators),
-        names("prover", args.provers),
-    )
-    print(markdown_table(runs))
-    if args.csv:
-        with args.csv.open("w", newline="", encoding="utf-8") as out:
-            write_csv(runs, out)
-    return 0
 
 
 def _plugins(planner: Planner) -> int:

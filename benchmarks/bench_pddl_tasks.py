@@ -1,0 +1,68 @@
+"""Time small IPC tasks (PDDL) under every registered strategy x state heuristic.
+
+    .venv/bin/python -m pytest benchmarks/bench_pddl_tasks.py --benchmark-only
+
+Each case runs ``strips solve PROBLEM --plan-file PLAN`` in-process (loading, grounding and
+search: what a user waits for), then checks the plan with ``strips validate``. The
+heuristics vary only for strategies that search ground tasks (the others do not use
+one). A combination the planner refuses (exit code 2) is skipped with its message. Skipped entirely until ``strips_framework.pddl`` exists, or
+without ``shared/bench/ipc`` beside the repository.
+"""
+
+import contextlib
+import io
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("strips_framework.pddl")
+import tomli_w
+
+from strips_framework.bench.problems import find_domain
+from strips_framework.cli import main
+from strips_framework.plugins import Registry
+
+TASKS = ["blocks/task01", "gripper/task01"]
+REGISTRY = Registry.from_plugins()
+
+
+def _heuristics(strategy: str) -> list[str | None]:
+    searches_ground_tasks = getattr(REGISTRY.get("strategy", strategy).cls, "works_on", None)
+    return REGISTRY.names("heuristic") if searches_ground_tasks == "ground-task" else [None]
+
+
+COMBINATIONS = [(s, h) for s in REGISTRY.names("strategy") for h in _heuristics(s)]
+
+
+def _bench_dir() -> Path | None:
+    for parent in Path(__file__).resolve().parents:
+        if (parent / "shared" / "bench" / "ipc").is_dir():
+            return parent / "shared" / "bench" / "ipc"
+    return None
+
+
+BENCH = _bench_dir()
+
+
+def _quiet(argv: list[str]) -> tuple[int, str]:
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(argv)
+    return code, err.getvalue().strip()
+
+
+@pytest.mark.skipif(BENCH is None, reason="shared/bench/ipc not found")
+@pytest.mark.parametrize("task", TASKS)
+@pytest.mark.parametrize(("strategy", "heuristic"), COMBINATIONS)
+def test_pddl_task(benchmark, tmp_path, task, strategy, heuristic):
+    problem = BENCH / f"{task}.pddl"
+    config, plan = tmp_path / "strips.toml", tmp_path / "plan.txt"
+    data = {"strategy": strategy, "limits": {"time": 20, "nodes": 2000}}
+    config.write_text(tomli_w.dumps(data | ({"heuristic": heuristic} if heuristic else {})))
+    argv = ["solve", str(problem), "--config", str(config), "--plan-file", str(plan)]
+    code, message = benchmark.pedantic(_quiet, args=(argv,), rounds=1, iterations=1)
+    if code == 2:
+        pytest.skip(f"{strategy}/{heuristic} refused: {message}")
+    benchmark.extra_info.update(exit_code=code)
+    if code == 0:
+        assert _quiet(["validate", str(find_domain(problem)), str(problem), str(plan)])[0] == 0

@@ -1,0 +1,142 @@
+"""The ``strips bench`` command line: run a matrix, the quick form, and ``bench report``.
+
+    strips bench MATRIX.toml [--output RESULTS.jsonl] [--resume] [--jobs N | --scheduler tcp://HOST:PORT]
+    strips bench PROBLEM... [--strategies a,b] [--evaluators ...] [--provers ...] [--all]
+    strips bench report RESULTS.jsonl [--output FOLDER] [--pair A,B]
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Any
+
+from strips_framework.bench.matrix import Matrix
+from strips_framework.bench.results import ResultsFile, RowList, read_rows
+from strips_framework.bench.summary import COLUMNS, markdown, per_problem_rows, summary_rows, tasks
+from strips_framework.config import Config
+from strips_framework.errors import ConfigError, StripsError
+from strips_framework.plugins import Registry
+
+INTERRUPTED = 130
+EXTRA_HINT = "pip install 'strips-framework[bench]'"
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    bench = commands.add_parser(
+        "bench",
+        help="run a benchmark matrix (or problems x strategies x evaluators x provers); "
+        "'strips bench report RESULTS' summarizes and plots",
+        description="Run every problem under every configuration, each run in its own "
+        "process under time and memory limits; rows stream to a JSON lines file. "
+        "'strips bench report RESULTS' makes the table and plots (see docs/bench.md).",
+    )
+    bench.add_argument("targets", type=Path, nargs="+", help="a matrix file (.toml) or problem files")
+    bench.add_argument("-o", "--output", type=Path,
+                       help="results file (default for a matrix: MATRIX-results.jsonl)")
+    bench.add_argument("--resume", action="store_true", help="continue a results file: skip runs in it")
+    bench.add_argument("--jobs", type=int, default=1, help="runs at a time on this machine (default 1)")
+    bench.add_argument("--scheduler", help="run on the Dask cluster at tcp://HOST:PORT instead")
+    bench.add_argument("--max-runs", type=int, help="stop after this many runs (continue with --resume)")
+    bench.add_argument("--no-progress", action="store_true", help="no progress bar")
+    quick = bench.add_argument_group("quick form (problem files instead of a matrix)")
+    quick.add_argument("--config", type=Path, help="base strips.toml (options, planner limits)")
+    for kind, plural in (("strategy", "strategies"), ("evaluator", "evaluators"), ("prover", "provers")):
+        quick.add_argument(f"--{plural}", help=f"comma-separated {kind} names (default: the config's)")
+    quick.add_argument("--all", action="store_true", help="every registered name of each kind")
+    quick.add_argument("--time", type=float, default=60.0, help="seconds per run (default 60)")
+    quick.add_argument("--memory", type=int, default=2048, help="MiB per run (default 2048)")
+
+
+def report_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="strips bench report",
+        description="Summary table per configuration, cactus and scatter plots (PNG, SVG), "
+        "and a Markdown report embedding them.",
+    )
+    parser.add_argument("results", type=Path, help="a results file written by 'strips bench'")
+    parser.add_argument("-o", "--output", type=Path, help="folder (default: RESULTS-report/)")
+    parser.add_argument("--pair", help="the scatter plot's two configurations: A,B (default: first two)")
+    return parser
+
+
+def bench(args: argparse.Namespace) -> int:
+    # Imported here, not at the top: every run's child is a `strips solve`, and its
+    # start-up should not pay for the progress bar and the executors.
+    from strips_framework.bench.executors import DaskExecutor, LocalExecutor, run_matrix
+
+    if args.jobs < 1:
+        raise ConfigError(f"--jobs: expected a number >= 1, got {args.jobs}")
+    matrix_form = len(args.targets) == 1 and args.targets[0].suffix == ".toml"
+    matrix = Matrix.from_file(args.targets[0]) if matrix_form else _quick_matrix(args)
+    for note in matrix.notes():
+        print(f"strips: note: {note}", file=sys.stderr)
+    output = args.output
+    if output is None and matrix_form:
+        output = Path(f"{args.targets[0].stem}-results.jsonl")
+    sink = ResultsFile(output, args.resume) if output else RowList()
+    specs = matrix.runs()
+    executor = DaskExecutor(args.scheduler) if args.scheduler else LocalExecutor(args.jobs)
+    before = len(sink.done)
+    print(f"{len(specs)} runs in the matrix, {before} already done"
+          + (f"; results: {output}" if output else ""), file=sys.stderr)
+    try:
+        tally = run_matrix(specs, sink, executor, not args.no_progress, args.max_runs)
+    except KeyboardInterrupt:
+        print(f"\ninterrupted: {len(sink.done) - before} runs written"
+              + (f" to {output}; continue with --resume" if output else ""), file=sys.stderr)
+        return INTERRUPTED
+    except ImportError as error:
+        raise ConfigError(f"--scheduler needs dask.distributed ({error}): {EXTRA_HINT}") from None
+    finally:
+        sink.close()
+    counts = ", ".join(f"{status} {count}" for status, count in sorted(tally.items()))
+    print(f"{sum(tally.values())} runs finished: {counts or 'none'}", file=sys.stderr)
+    if not matrix_form:  # the quick form shows its results at once
+        found = tasks(sink.rows if isinstance(sink, RowList) else read_rows(output))
+        header, rows = per_problem_rows(found)
+        print(markdown(header, rows) + "\n\n" + markdown(COLUMNS, summary_rows(found)))
+    return 1 if tally["lost"] else 0
+
+
+def _quick_matrix(args: argparse.Namespace) -> Matrix:
+    """The matrix the quick form's options describe: its problems, the product of the
+    named (or, with --all, every registered) strategies, evaluators and provers."""
+    registry = Registry.from_plugins()
+    product: dict[str, Any] = {}
+    base_config = Config.from_file(args.config) if args.config else Config.default()
+    if args.config:
+        product["base"] = str(args.config.resolve())
+    for kind, given in (("strategy", args.strategies), ("evaluator", args.evaluators),
+                        ("prover", args.provers)):
+        if given:
+            product[kind] = [name.strip() for name in given.split(",") if name.strip()]
+        else:
+            product[kind] = registry.names(kind) if args.all else [base_config.choices[kind].name]
+    missing = [str(path) for path in args.targets if not path.is_file()]
+    if missing:
+        raise ConfigError(f"no such problem file: {', '.join(missing)}")
+    data = {
+        "problems": {"command line": [str(path.resolve()) for path in args.targets]},
+        "product": product,
+        "limits": {"time": args.time, "memory": args.memory},
+    }
+    return Matrix.from_dict(data, "strips bench", Path.cwd())
+
+
+def report(argv: list[str]) -> int:
+    args = report_parser().parse_args(argv)
+    try:
+        from strips_framework.bench.report import write_report
+    except ImportError as error:
+        raise StripsError(f"the report needs matplotlib ({error}): {EXTRA_HINT}") from None
+    rows = read_rows(args.results)
+    folder = args.output or args.results.with_name(f"{args.results.stem}-report")
+    pair = [name.strip() for name in args.pair.split(",")] if args.pair else None
+    if pair is not None and len(pair) != 2:
+        raise ConfigError(f"--pair: expected two configuration names A,B, got {args.pair!r}")
+    print(write_report(rows, args.results, folder, pair))
+    print(f"\nwritten: {folder / 'report.md'}, summary.csv, cactus and scatter plots (PNG, SVG)",
+          file=sys.stderr)
+    return 0

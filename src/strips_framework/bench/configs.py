@@ -1,0 +1,145 @@
+"""The configurations a matrix compares, and the command line each one runs.
+
+Three kinds, all run as a child process whose output follows one contract (that of
+``strips solve --json``, or failing that Fast Downward's: a plan file, an ``expanded: N``
+line, exit code 0 plan found / 11 unsolvable / 12 incomplete search exhausted / 22 out of
+memory / 23 out of time):
+
+- :class:`PlannerConfig`: our planner with a ``strips.toml``;
+- :class:`CommandConfig`: any command, e.g. another build of the planner or a test double;
+- :class:`AnchorConfig`: pyperplan or Fast Downward (PDDL problems only).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any
+
+import tomli_w
+from attrs import frozen
+
+from strips_framework.bench import anchors
+from strips_framework.bench.problems import PDDL, ProblemFile
+
+#: ``strips`` in the child's interpreter, found without relying on PATH (a Dask worker's
+#: PATH need not hold the virtual environment).
+STRIPS = ("-c", "import sys; from strips_framework.cli import main; sys.exit(main())")
+PLACEHOLDERS = ("python", "problem", "domain", "plan", "folder")
+
+
+@frozen
+class RunFiles:
+    """Where one run reads and writes: its private folder holds the plan and any config."""
+
+    problem: Path
+    domain: Path | None
+    folder: Path
+
+    @property
+    def plan(self) -> Path:
+        return self.folder / "plan.txt"
+
+
+def strips_command(*args: str) -> list[str]:
+    return [sys.executable, *STRIPS, *args]
+
+
+@frozen
+class PlannerConfig:
+    """``strips solve PROBLEM --json`` with ``data`` written out as its ``strips.toml``."""
+
+    name: str
+    data: dict[str, Any]
+    copies_inputs = False
+
+    def command(self, files: RunFiles) -> list[str]:
+        config = files.folder / "strips.toml"
+        config.write_text(tomli_w.dumps(self.data), encoding="utf-8")
+        return strips_command(
+            "solve", str(files.problem), "--json", "--plan-file", str(files.plan),
+            "--config", str(config),
+        )
+
+    def plan_file(self, files: RunFiles) -> Path:
+        return files.plan
+
+    def accepts(self, problem: ProblemFile) -> bool:
+        return True
+
+    def missing(self) -> str | None:
+        return None
+
+    def describe(self) -> dict[str, Any]:
+        return {"kind": "planner", "strips.toml": self.data}
+
+
+@frozen
+class CommandConfig:
+    """A command line with placeholders ``{python} {problem} {domain} {plan} {folder}``."""
+
+    name: str
+    template: tuple[str, ...]
+    copies_inputs = False
+
+    def command(self, files: RunFiles) -> list[str]:
+        values = {
+            "python": sys.executable, "problem": str(files.problem),
+            "domain": str(files.domain or ""), "plan": str(files.plan),
+            "folder": str(files.folder),
+        }
+        return [part.format(**values) for part in self.template]
+
+    def plan_file(self, files: RunFiles) -> Path:
+        return files.plan
+
+    def accepts(self, problem: ProblemFile) -> bool:
+        return True
+
+    def missing(self) -> str | None:
+        return None
+
+    def describe(self) -> dict[str, Any]:
+        return {"kind": "command", "command": list(self.template)}
+
+
+@frozen
+class AnchorConfig:
+    """pyperplan (``args`` e.g. ``-s gbf -H hff``) or Fast Downward (``args`` are driver
+    options such as ``--alias lama-first``; ``search`` its ``--search`` string)."""
+
+    name: str
+    planner: str
+    args: tuple[str, ...]
+    search: str | None = None
+    #: pyperplan writes its plan beside the problem: each run works on private copies.
+    copies_inputs = True
+
+    def command(self, files: RunFiles) -> list[str]:
+        start = anchors.planner_command(self.planner)
+        if start is None:
+            raise FileNotFoundError(anchors.missing_note(self.planner))
+        inputs = [str(files.domain), str(files.problem)]
+        if self.planner == anchors.PYPERPLAN:
+            return [*start, *self.args, *inputs]
+        search = ["--search", self.search] if self.search else []
+        return [*start, "--plan-file", str(files.plan), *self.args, *inputs, *search]
+
+    def plan_file(self, files: RunFiles) -> Path:
+        if self.planner == anchors.PYPERPLAN:
+            return files.problem.with_name(files.problem.name + ".soln")
+        return files.plan
+
+    def accepts(self, problem: ProblemFile) -> bool:
+        return problem.path.suffix == PDDL
+
+    def missing(self) -> str | None:
+        installed = anchors.planner_command(self.planner) is not None
+        return None if installed else anchors.missing_note(self.planner)
+
+    def describe(self) -> dict[str, Any]:
+        described = {"kind": "anchor", "planner": self.planner, "args": list(self.args)}
+        return described | ({"search": self.search} if self.search else {})
+
+
+Configuration = PlannerConfig | CommandConfig | AnchorConfig

@@ -1,0 +1,306 @@
+"""The matrix file: problem sets x configurations x repetitions, under limits.
+
+    repetitions = 1            # runs of each (problem, configuration)
+    seed = 0                   # repetition r runs with PYTHONHASHSEED = seed + r
+
+    [limits]
+    time = 60                  # wall-clock seconds per run (then its process group is killed)
+    memory = 2048              # MiB of address space per run (RLIMIT_AS)
+
+    [problems]                 # named sets of globs, relative to this file
+    paper = ["../three-boxes.strips", "../robot-world/*.strips"]
+
+    [product]                  # one configuration per combination
+    evaluator = ["paper", "goal-count"]
+    base = "../configs/paper.toml"
+
+    [configs.optimal]          # named configurations (see configs.py for the kinds)
+    file = "../configs/optimal.toml"
+
+Every mistake is reported with the file, the key path and what was expected.
+"""
+
+from __future__ import annotations
+
+import itertools
+import tomllib
+from pathlib import Path
+from typing import Any, NoReturn
+
+from attrs import frozen
+
+from strips_framework.bench import anchors
+from strips_framework.bench.configs import (
+    PLACEHOLDERS,
+    AnchorConfig,
+    CommandConfig,
+    Configuration,
+    PlannerConfig,
+)
+from strips_framework.bench.problems import ProblemFile, expand_problem_set
+from strips_framework.config import COMPONENTS, DEFAULT_CHOICES, Config
+from strips_framework.errors import ConfigError, StripsError
+from strips_framework.planner import Planner
+from strips_framework.plugins import Registry
+
+PRODUCT_KINDS = (*COMPONENTS, "heuristic")
+TOP_KEYS = ("repetitions", "seed", "limits", "problems", "product", "configs")
+CONFIG_KINDS = ("file", "command", "anchor")
+
+
+DEFAULT_TIME, DEFAULT_MEMORY = 60.0, 2048
+
+
+@frozen
+class RunLimits:
+    time: float = DEFAULT_TIME
+    memory: int = DEFAULT_MEMORY  # MiB
+
+
+@frozen
+class RunSpec:
+    """One run: everything a worker needs, picklable, so it can travel to a Dask worker."""
+
+    problem: ProblemFile
+    config: Configuration
+    repetition: int
+    seed: int
+    limits: RunLimits
+    position: int = 0  # in the matrix's order, which reports keep
+
+    @property
+    def key(self) -> str:
+        return run_key(self.problem.name, self.config.name, self.repetition)
+
+
+def run_key(problem: str, config: str, repetition: int) -> str:
+    return f"{problem} | {config} | {repetition}"
+
+
+@frozen
+class Matrix:
+    source: str
+    problems: tuple[ProblemFile, ...]
+    configs: tuple[Configuration, ...]
+    repetitions: int
+    seed: int
+    limits: RunLimits
+
+    @classmethod
+    def from_file(cls, path: Path) -> Matrix:
+        try:
+            data = tomllib.loads(path.read_text(encoding="utf-8"))
+        except OSError as error:
+            raise ConfigError(f"{path}: cannot read matrix: {error.strerror}") from None
+        except tomllib.TOMLDecodeError as error:
+            raise ConfigError(f"{path}: not valid TOML: {error}") from None
+        return cls.from_dict(data, str(path), path.resolve().parent)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], source: str, base: Path) -> Matrix:
+        reader = _Reader(source, base)
+        for key in data:
+            if key not in TOP_KEYS:
+                reader.fail(key, f"unknown key (expected one of: {', '.join(TOP_KEYS)})")
+        problem_sets = reader.table(data, "problems", required=True)
+        problems: list[ProblemFile] = []
+        for set_name, patterns in problem_sets.items():
+            patterns = [patterns] if isinstance(patterns, str) else patterns
+            reader.expect(patterns, list, f"problems.{set_name}", "an array of glob patterns")
+            problems += expand_problem_set(set_name, patterns, base, f"{source}: 'problems.{set_name}'")
+        configs = reader.product(reader.table(data, "product"))
+        for name, table in reader.table(data, "configs").items():
+            configs.append(reader.named_config(name, table))
+        if not configs:
+            reader.fail("configs", "no configuration: give a [product] table or [configs.NAME] tables")
+        names = [config.name for config in configs]
+        for name in names:
+            if names.count(name) > 1:
+                reader.fail("configs", f"the configuration name {name!r} is used twice")
+        return cls(
+            source, tuple(_unique(problems)), tuple(configs),
+            reader.integer(data, "repetitions", 1, minimum=1),
+            reader.integer(data, "seed", 0, minimum=0),
+            reader.limits(reader.table(data, "limits")),
+        )
+
+    def runs(self) -> list[RunSpec]:
+        """Every run, problem-major so that early results cover every configuration."""
+        combinations = [
+            (problem, config, repetition)
+            for problem in self.problems
+            for repetition in range(self.repetitions)
+            for config in self.configs
+            if config.accepts(problem) and config.missing() is None
+        ]
+        return [
+            RunSpec(problem, config, repetition, self.seed + repetition, self.limits, position)
+            for position, (problem, config, repetition) in enumerate(combinations)
+        ]
+
+    def notes(self) -> list[str]:
+        """Why configurations or problems are left out (not installed, PDDL only)."""
+        notes = []
+        for config in self.configs:
+            missing = config.missing()
+            if missing:
+                notes.append(f"configuration {config.name!r} skipped: {missing}")
+                continue
+            refused = [p.name for p in self.problems if not config.accepts(p)]
+            if refused:
+                notes.append(
+                    f"configuration {config.name!r} runs PDDL problems only: "
+                    f"{len(refused)} problem(s) skipped"
+                )
+        return notes
+
+
+def _unique(problems: list[ProblemFile]) -> list[ProblemFile]:
+    return list({problem.name: problem for problem in problems}.values())
+
+
+class _Reader:
+    """Reads the matrix's tables, failing with the file and key path."""
+
+    def __init__(self, source: str, base: Path) -> None:
+        self.source, self.base = source, base
+        self.registry = Registry.from_plugins()
+
+    def fail(self, path: str, message: str) -> NoReturn:
+        raise ConfigError(f"{self.source}: '{path}': {message}")
+
+    def expect(self, value: object, kind: type | tuple[type, ...], path: str, what: str) -> None:
+        if not isinstance(value, kind) or isinstance(value, bool) and kind is not bool:
+            self.fail(path, f"expected {what}, got {value!r}")
+
+    def table(self, data: dict[str, Any], key: str, required: bool = False) -> dict[str, Any]:
+        if key not in data and required:
+            self.fail(key, "missing (expected a table)")
+        value = data.get(key, {})
+        self.expect(value, dict, key, "a table")
+        return value
+
+    def integer(self, data: dict[str, Any], key: str, default: int, minimum: int) -> int:
+        value = data.get(key, default)
+        self.expect(value, int, key, f"an integer >= {minimum}")
+        if value < minimum:
+            self.fail(key, f"expected an integer >= {minimum}, got {value}")
+        return value
+
+    def limits(self, table: dict[str, Any]) -> RunLimits:
+        for key in table:
+            if key not in ("time", "memory"):
+                self.fail(f"limits.{key}", "unknown key (expected time or memory)")
+        time = table.get("time", DEFAULT_TIME)
+        self.expect(time, (int, float), "limits.time", "seconds > 0")
+        memory = table.get("memory", DEFAULT_MEMORY)
+        self.expect(memory, int, "limits.memory", "MiB (an integer) > 0")
+        if time <= 0 or memory <= 0:
+            self.fail("limits", f"time and memory must be > 0, got time={time}, memory={memory}")
+        return RunLimits(float(time), memory)
+
+    def strips_toml(self, relative: str, path: str) -> dict[str, Any]:
+        self.expect(relative, str, path, "a path to a strips.toml")
+        file = self.base / relative
+        try:
+            return tomllib.loads(file.read_text(encoding="utf-8"))
+        except (OSError, tomllib.TOMLDecodeError) as error:
+            self.fail(path, f"cannot read the config {file}: {error}")
+
+    def checked(self, name: str, data: dict[str, Any], path: str) -> PlannerConfig:
+        """A planner configuration, checked now so that no run fails on a typo."""
+        try:
+            Planner.create(Config.from_dict(data, f"{self.source}: '{path}'"))
+        except StripsError as error:  # config errors name the path; plugin errors do not
+            message = str(error)
+            if not message.startswith(self.source):
+                message = f"{self.source}: '{path}': {message}"
+            raise ConfigError(message) from None
+        return PlannerConfig(name, data)
+
+    def product(self, table: dict[str, Any]) -> list[Configuration]:
+        if not table:
+            return []
+        base = self.strips_toml(table["base"], "product.base") if "base" in table else {}
+        axes = {}
+        for key, values in table.items():
+            if key == "base":
+                continue
+            if key not in PRODUCT_KINDS:
+                self.fail(f"product.{key}", f"unknown key (expected base or one of: {', '.join(PRODUCT_KINDS)})")
+            values = [values] if isinstance(values, str | dict) else values
+            self.expect(values, list, f"product.{key}", "an array of names or tables")
+            for index, value in enumerate(values):
+                self.expect(value, (str, dict), f"product.{key}[{index}]", "a name or a table with 'name'")
+            axes[key] = [{"name": v} if isinstance(v, str) else v for v in values]
+        configs = []
+        varying = [kind for kind, values in axes.items() if len(values) > 1] or list(axes)
+        for combination in itertools.product(*axes.values()):
+            choices = dict(zip(axes, combination, strict=True))
+            data = dict(base)
+            for kind, choice in choices.items():
+                data[kind] = _merge_choice(kind, base.get(kind), choice)
+            name = "+".join(_label(choices[kind]) for kind in varying) or "base"
+            configs.append(self.checked(name, data, f"product ({name})"))
+        return configs
+
+    def named_config(self, name: str, table: object) -> Configuration:
+        path = f"configs.{name}"
+        if not isinstance(table, dict):
+            self.fail(path, f"expected a table, got {table!r}")
+        kinds = [key for key in CONFIG_KINDS if key in table]
+        if len(kinds) > 1:
+            self.fail(path, f"give one of {', '.join(CONFIG_KINDS)}, not {' and '.join(kinds)}")
+        if "command" in table:
+            return self.command(name, table, path)
+        if "anchor" in table:
+            return self.anchor(name, table, path)
+        data = dict(table)
+        if "file" in data:
+            data = self.strips_toml(data.pop("file"), f"{path}.file") | data
+        return self.checked(name, data, path)
+
+    def command(self, name: str, table: dict[str, Any], path: str) -> CommandConfig:
+        for key in table:
+            if key != "command":
+                self.fail(f"{path}.{key}", "unknown key (a command configuration has only 'command')")
+        command = table["command"]
+        self.expect(command, list, f"{path}.command", "an array of strings")
+        if not command or not all(isinstance(part, str) for part in command):
+            self.fail(f"{path}.command", f"expected a non-empty array of strings, got {command!r}")
+        for part in command:
+            try:
+                part.format(**dict.fromkeys(PLACEHOLDERS, ""))
+            except (KeyError, IndexError, ValueError) as error:
+                known = ", ".join("{" + p + "}" for p in PLACEHOLDERS)
+                self.fail(f"{path}.command", f"bad placeholder in {part!r}: {error} (known: {known})")
+        return CommandConfig(name, tuple(command))
+
+    def anchor(self, name: str, table: dict[str, Any], path: str) -> AnchorConfig:
+        for key in table:
+            if key not in ("anchor", "args", "search"):
+                self.fail(f"{path}.{key}", "unknown key (expected anchor, args, search)")
+        planner = table["anchor"]
+        if planner not in anchors.PLANNERS:
+            self.fail(f"{path}.anchor", f"expected one of {', '.join(anchors.PLANNERS)}, got {planner!r}")
+        args = table.get("args", [])
+        if not isinstance(args, list) or not all(isinstance(a, str) for a in args):
+            self.fail(f"{path}.args", f"expected an array of strings, got {args!r}")
+        search = table.get("search")
+        if search is not None and (planner != anchors.FAST_DOWNWARD or not isinstance(search, str)):
+            self.fail(f"{path}.search", "expected a string, for fast-downward only")
+        return AnchorConfig(name, planner, tuple(args), search)
+
+
+def _merge_choice(kind: str, base: object, choice: dict[str, Any]) -> dict[str, Any]:
+    """The product's choice, keeping the base's options when it names the same class
+    (another class's options would not fit)."""
+    base_table = {"name": base} if isinstance(base, str) else dict(base or {})
+    if base_table.get("name", DEFAULT_CHOICES.get(kind)) == choice.get("name"):
+        return base_table | choice
+    return dict(choice)
+
+
+def _label(choice: dict[str, Any]) -> str:
+    options = ",".join(f"{k}={v}" for k, v in choice.items() if k != "name")
+    return f"{choice['name']}({options})" if options else str(choice["name"])

@@ -1,0 +1,97 @@
+"""The two pictures planning papers use: a cactus (coverage) plot and a pairwise scatter.
+
+Both go to PNG and SVG. matplotlib runs on its Agg backend: no display is needed, and
+a report can be made on a cluster's head node.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+from strips_framework.bench.summary import Task, configs
+
+FORMATS = ("png", "svg")
+METRICS = {"time": "time (s)", "expansions": "expansions"}
+
+
+def _save(figure: plt.Figure, stem: Path) -> list[Path]:
+    figure.tight_layout()
+    paths = [stem.with_suffix(f".{fmt}") for fmt in FORMATS]
+    for path in paths:
+        figure.savefig(path, dpi=150)
+    plt.close(figure)
+    return paths
+
+
+def cactus(found: Sequence[Task], time_limit: float, stem: Path) -> list[Path]:
+    """Problems solved (y) within a time (x, log scale), one step line per configuration."""
+    figure, axes = plt.subplots(figsize=(7, 4.5))
+    names = configs(found)
+    total = len({task.problem for task in found})
+    for name in names:
+        times = sorted(t.time for t in found if t.config == name and t.solved and t.time)
+        solved = len(times)
+        xs = [times[0], *times, time_limit] if times else [time_limit]
+        ys = [0, *range(1, solved + 1), solved] if times else [0]
+        axes.step(xs, ys, where="post", label=f"{name} ({solved}/{total})", linewidth=1.8)
+    axes.set_xscale("log")
+    axes.set_xlabel("time per problem (s, log scale)")
+    axes.set_ylabel("problems solved")
+    axes.set_ylim(0, total + 0.5)
+    axes.axvline(time_limit, color="grey", linestyle=":", linewidth=1)
+    axes.set_title("Coverage: problems solved within a time")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(loc="lower right", fontsize="small")
+    return _save(figure, stem)
+
+
+def scatter(
+    found: Sequence[Task], first: str, second: str, metric: str, time_limit: float, stem: Path
+) -> list[Path]:
+    """One point per problem: ``first``'s value (x) against ``second``'s (y), log-log.
+
+    A problem one side did not solve sits on that side's "unsolved" line, beyond every
+    measured value; points below the diagonal are problems where ``second`` did better.
+    """
+
+    def value(task: Task | None) -> float | None:
+        if task is None or not task.solved:
+            return None
+        return task.time if metric == "time" else task.expanded
+
+    by_key = {(task.problem, task.config): task for task in found}
+    problems = list(dict.fromkeys(task.problem for task in found))
+    pairs = [(value(by_key.get((p, first))), value(by_key.get((p, second)))) for p in problems]
+    measured = [v for pair in pairs for v in pair if v]
+    if metric == "time":
+        ceiling = max([time_limit, *measured])
+    else:
+        ceiling = 2 * max(measured, default=1)
+    floor = min(measured, default=ceiling / 10) / 2
+    both = [(x, y) for x, y in pairs if x and y]
+    one = [(x or ceiling, y or ceiling) for x, y in pairs if bool(x) != bool(y)]
+    figure, axes = plt.subplots(figsize=(5.5, 5.5))
+    axes.plot([floor, ceiling], [floor, ceiling], color="grey", linewidth=1, label="equal")
+    axes.axhline(ceiling, color="red", linestyle=":", linewidth=1, label="unsolved (the limit)")
+    axes.axvline(ceiling, color="red", linestyle=":", linewidth=1)
+    if both:
+        axes.scatter(*zip(*both, strict=True), s=28, label=f"both solved ({len(both)})")
+    if one:
+        axes.scatter(*zip(*one, strict=True), s=36, marker="x", color="red",
+                     label=f"solved by one only ({len(one)})")
+    axes.set_xscale("log")
+    axes.set_yscale("log")
+    axes.set_xlim(floor, ceiling * 1.5)
+    axes.set_ylim(floor, ceiling * 1.5)
+    axes.set_xlabel(f"{first}: {METRICS[metric]}")
+    axes.set_ylabel(f"{second}: {METRICS[metric]}")
+    axes.set_title(f"{METRICS[metric].split(' ')[0].capitalize()} per problem (log-log)")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(loc="best", fontsize="small")
+    return _save(figure, stem)

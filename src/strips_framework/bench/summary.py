@@ -1,0 +1,130 @@
+"""From result rows to per-task outcomes and the per-configuration summary table.
+
+A *task* is one problem under one configuration; its repetitions are folded into one
+outcome: solved when every repetition found a plan that the validator did not reject,
+with the median of each measurement. Time is the planner's own (``strips solve`` reports
+it; search and proving without interpreter start-up) and the wall clock of the child
+where a planner reports none (anchors, commands).
+"""
+
+from __future__ import annotations
+
+import statistics
+from collections import defaultdict
+from collections.abc import Sequence
+from typing import Any
+
+from attrs import frozen
+
+from strips_framework.bench.runner import FAILURES, SOLVED
+
+COLUMNS = (
+    "config", "solved", "timeout", "memout", "crash", "invalid", "total time (s)",
+    "median time (s)", "median expansions", "median plan length", "proving share",
+)
+
+
+@frozen
+class Task:
+    problem: str
+    config: str
+    solved: bool
+    status: str  # solved, or the status of the first repetition that was not
+    time: float | None
+    expanded: float | None
+    plan_length: float | None
+    proving_seconds: float | None
+    planner_seconds: float | None
+    invalid: bool
+
+
+def _median(values: list[Any]) -> float | None:
+    present = [v for v in values if v is not None]
+    return statistics.median(present) if present else None
+
+
+def tasks(rows: Sequence[dict[str, Any]]) -> list[Task]:
+    """One outcome per (problem, configuration), in the matrix's order (rows finish in
+    any order)."""
+    grouped: dict[tuple[str, str], list[dict[str, Any]]] = defaultdict(list)
+    for row in sorted(rows, key=lambda row: row.get("position", len(rows))):
+        grouped[row["problem"], row["config"]].append(row)
+    found = []
+    for (problem, config), runs in grouped.items():
+        invalid = any(run.get("valid") is False for run in runs)
+        solved = all(run["status"] == SOLVED for run in runs) and not invalid
+        status = next((run["status"] for run in runs if run["status"] != SOLVED), SOLVED)
+        found.append(Task(
+            problem, config, solved, "invalid" if invalid else status,
+            _median([_time(run) for run in runs]),
+            _median([run.get("expanded") for run in runs]),
+            _median([run.get("plan_length") for run in runs]),
+            _median([run.get("proving_seconds") for run in runs]),
+            _median([run.get("planner_seconds") for run in runs]),
+            invalid,
+        ))
+    return found
+
+
+def _time(row: dict[str, Any]) -> float | None:
+    planner = row.get("planner_seconds")
+    return planner if planner is not None else row.get("wall_seconds")
+
+
+def configs(found: Sequence[Task]) -> list[str]:
+    return list(dict.fromkeys(task.config for task in found))
+
+
+def summary_rows(found: Sequence[Task]) -> list[list[str]]:
+    """The summary table's cells, one row per configuration (see :data:`COLUMNS`)."""
+    table = []
+    for config in configs(found):
+        mine = [task for task in found if task.config == config]
+        solved = [task for task in mine if task.solved]
+        times = [task.time for task in solved if task.time is not None]
+        proving = [t.proving_seconds for t in solved if t.proving_seconds is not None]
+        planner = [t.planner_seconds for t in solved if t.proving_seconds is not None]
+        share = sum(proving) / sum(planner) if proving and sum(planner) else None
+        table.append([
+            config,
+            f"{len(solved)}/{len(mine)}",
+            *(str(sum(task.status == status for task in mine)) for status in FAILURES),
+            str(sum(task.invalid for task in mine)),
+            _cell(sum(times) if times else None, ".3f"),
+            _cell(_median(times), ".3f"),
+            _cell(_median([task.expanded for task in solved]), "g"),
+            _cell(_median([task.plan_length for task in solved]), "g"),
+            _cell(share, ".0%"),
+        ])
+    return table
+
+
+def _cell(value: float | None, spec: str) -> str:
+    return "-" if value is None else format(value, spec)
+
+
+def markdown(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    return "\n".join(lines + ["| " + " | ".join(row) + " |" for row in rows])
+
+
+def per_problem_rows(found: Sequence[Task]) -> tuple[list[str], list[list[str]]]:
+    """A problem x configuration table: time, expansions and plan length, or the status."""
+    names = configs(found)
+    by_key = {(task.problem, task.config): task for task in found}
+    rows = []
+    for problem in dict.fromkeys(task.problem for task in found):
+        cells = [problem]
+        for config in names:
+            task = by_key.get((problem, config))
+            if task is None:
+                cells.append("")
+            elif task.solved:
+                cells.append(
+                    f"{_cell(task.time, '.3f')} s, {_cell(task.expanded, 'g')} exp, "
+                    f"{_cell(task.plan_length, 'g')} steps"
+                )
+            else:
+                cells.append(task.status)
+        rows.append(cells)
+    return ["problem", *names], rows

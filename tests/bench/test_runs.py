@@ -1,0 +1,153 @@
+"""Running a matrix locally: rows, failures with their causes, interruption and resume."""
+
+from __future__ import annotations
+
+import signal
+import subprocess
+import time
+from collections import Counter
+
+from strips_framework.bench.configs import strips_command
+from strips_framework.cli import main
+
+from .conftest import PUSH_ONE_BOX, THREE_BOXES, fake, read_rows
+
+SMALL = f"""
+repetitions = 2
+seed = 3
+[limits]
+time = 30
+memory = 1024
+[problems]
+paper = ["{PUSH_ONE_BOX}", "{THREE_BOXES}"]
+[product]
+evaluator = ["paper", "goal-count"]
+[configs.short-goals]
+strategy = {{name = "means-ends", max_goals = 1}}
+"""
+
+
+def test_a_small_matrix_gives_one_validated_row_per_run(write_matrix, tmp_path):
+    out = tmp_path / "results.jsonl"
+    assert main(["bench", str(write_matrix(SMALL)), "-o", str(out), "--jobs", "2",
+                 "--no-progress"]) == 0
+    rows = read_rows(out)
+    assert len(rows) == 2 * 2 * 3
+    assert len({row["key"] for row in rows}) == len(rows)
+    for row in rows:
+        assert row["seed"] == 3 + row["repetition"]
+        assert row["machine"]["cpus"] and row["versions"]["strips-framework"]
+        assert row["limits"] == {"time": 30.0, "memory_mib": 1024}
+        assert row["config_spec"]["kind"] == "planner"
+    solved = [row for row in rows if row["config"] != "short-goals"]
+    assert all(row["status"] == "solved" and row["valid"] is True for row in solved)
+    three_boxes = [row for row in solved if row["problem"].endswith("three-boxes.strips")
+                   and row["config"] == "paper"]
+    assert {row["plan_length"] for row in three_boxes} == {4}
+    assert {row["expanded"] for row in three_boxes} == {9}
+    assert all(row["validation"].startswith("valid plan of 4 steps") for row in three_boxes)
+    short = [row for row in rows if row["config"] == "short-goals"]
+    assert {row["status"] for row in short} == {"unsolved"}  # no room for subgoals
+    assert {row["cause"] for row in short} == {"planner status: exhausted"}
+
+
+def test_a_crash_a_hang_and_a_memory_hog_cost_their_own_runs(write_matrix, tmp_path):
+    matrix = write_matrix(f"""
+[limits]
+time = 3
+memory = 400
+[problems]
+one = ["{PUSH_ONE_BOX}"]
+[configs.crash]
+{fake("crash")}
+[configs.hang]
+{fake("hang")}
+[configs.hog]
+{fake("hog")}
+[configs.unsolvable]
+{fake("unsolvable")}
+[configs.fake-solver]
+{fake("solve")}
+[configs.json-solver]
+{fake("json")}
+""")
+    out = tmp_path / "results.jsonl"
+    assert main(["bench", str(matrix), "-o", str(out), "--jobs", "2", "--no-progress"]) == 0
+    rows = {row["config"]: row for row in read_rows(out)}
+    assert len(rows) == 6, rows.keys()
+    assert rows["crash"]["status"] == "crash"
+    assert rows["crash"]["cause"].startswith("killed by SIGABRT")
+    assert rows["hang"]["status"] == "timeout"
+    assert rows["hang"]["cause"] == "wall-clock limit of 3 s: process group killed"
+    assert 3 <= rows["hang"]["wall_seconds"] < 20
+    assert rows["hog"]["status"] == "memout"
+    assert "MemoryError" in rows["hog"]["cause"]
+    assert rows["unsolvable"]["status"] == "unsolved"
+    assert rows["unsolvable"]["cause"] == "unsolvable" and rows["unsolvable"]["expanded"] == 7
+    fake_solver = rows["fake-solver"]
+    assert (fake_solver["status"], fake_solver["expanded"], fake_solver["plan_length"]) == (
+        "solved", 3, 2
+    )
+    assert fake_solver["valid"] is True  # its plan replays in the simulator
+    assert fake_solver["config_spec"]["kind"] == "command"
+    json_solver = rows["json-solver"]  # figures from the JSON, phases summed
+    assert (json_solver["expanded"], json_solver["planner_seconds"]) == (5, 1.0)
+    assert json_solver["valid"] is True
+
+
+def test_an_invalid_plan_is_recorded_as_such(write_matrix, tmp_path, capsys):
+    matrix = write_matrix(f'[problems]\np = ["{THREE_BOXES}"]\n[configs.fake]\n{fake("solve")}\n')
+    out = tmp_path / "results.jsonl"
+    assert main(["bench", str(matrix), "-o", str(out), "--no-progress"]) == 0
+    assert "1 runs finished: invalid 1" in capsys.readouterr().err
+    [row] = read_rows(out)
+    assert row["status"] == "solved" and row["valid"] is False
+    assert row["validation"].startswith("the goal fails in the final state")
+
+
+def test_max_runs_then_resume_completes_without_duplicates(write_matrix, tmp_path, capsys):
+    matrix = write_matrix(SMALL)
+    out = tmp_path / "results.jsonl"
+    args = ["bench", str(matrix), "-o", str(out), "--no-progress", "--jobs", "2"]
+    assert main([*args, "--max-runs", "5"]) == 0
+    assert len(read_rows(out)) == 5
+    assert main(args) == 2  # an existing file is never overwritten by accident
+    assert "results file exists: pass --resume" in capsys.readouterr().err
+    with out.open("a") as torn:  # a runner killed in the middle of writing a row
+        torn.write('{"key": "half a ro')
+    assert main([*args, "--resume"]) == 0
+    rows = read_rows(out)
+    assert len(rows) == 12 and len({row["key"] for row in rows}) == 12
+    assert main([*args, "--resume"]) == 0
+    assert len(read_rows(out)) == 12
+    assert "12 runs in the matrix, 12 already done" in capsys.readouterr().err
+
+
+def test_ctrl_c_loses_no_finished_run_and_resume_finishes(write_matrix, tmp_path):
+    matrix = write_matrix(f"""
+[limits]
+time = 60
+[problems]
+one = ["{PUSH_ONE_BOX}"]
+[configs.quick]
+{fake("solve")}
+[configs.slow]
+{fake("hang")}
+""")
+    out = tmp_path / "results.jsonl"
+    command = [*strips_command("bench", str(matrix), "-o", str(out)), "--jobs", "2", "--no-progress"]
+    runner = subprocess.Popen(command, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 30
+    while not (out.exists() and out.read_text()) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    runner.send_signal(signal.SIGINT)
+    _, err = runner.communicate(timeout=30)
+    assert runner.returncode == 130, err
+    assert "continue with --resume" in err
+    assert [row["config"] for row in read_rows(out)] == ["quick"]
+    hung = subprocess.run(["pgrep", "-f", f"fake_planner.py hang {PUSH_ONE_BOX}"],
+                          check=False, capture_output=True, text=True).stdout.split()
+    assert hung == []  # the hung child was killed with the runner
+    matrix.write_text(matrix.read_text().replace("time = 60", "time = 1"))
+    assert main(["bench", str(matrix), "-o", str(out), "--resume", "--no-progress"]) == 0
+    assert Counter(row["config"] for row in read_rows(out)) == {"quick": 1, "slow": 1}
