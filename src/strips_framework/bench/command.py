@@ -10,14 +10,15 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from strips_framework.bench.matrix import Matrix
-from strips_framework.bench.results import ResultsFile, RowList, read_rows
-from strips_framework.bench.summary import COLUMNS, markdown, per_problem_rows, summary_rows, tasks
-from strips_framework.config import Config
 from strips_framework.errors import ConfigError, StripsError
-from strips_framework.plugins import Registry
+
+if TYPE_CHECKING:
+    from strips_framework.bench.matrix import Matrix
+
+# The runner, results and summary modules are imported inside the commands: `strips`
+# builds this parser on every start, and `strips solve` must not pay for them.
 
 INTERRUPTED = 130
 EXTRA_HINT = "pip install 'strips-framework[bench]'"
@@ -65,6 +66,15 @@ def bench(args: argparse.Namespace) -> int:
     # Imported here, not at the top: every run's child is a `strips solve`, and its
     # start-up should not pay for the progress bar and the executors.
     from strips_framework.bench.executors import DaskExecutor, LocalExecutor, run_matrix
+    from strips_framework.bench.matrix import Matrix
+    from strips_framework.bench.results import ResultsFile, RowList, read_rows
+    from strips_framework.bench.summary import (
+        COLUMNS,
+        markdown,
+        per_problem_rows,
+        summary_rows,
+        tasks,
+    )
 
     if args.jobs < 1:
         raise ConfigError(f"--jobs: expected a number >= 1, got {args.jobs}")
@@ -101,6 +111,10 @@ def bench(args: argparse.Namespace) -> int:
 
 
 def _quick_matrix(args: argparse.Namespace) -> Matrix:
+    from strips_framework.bench.matrix import Matrix
+    from strips_framework.config import Config
+    from strips_framework.plugins import Registry
+
     """The matrix the quick form's options describe: its problems, the product of the
     named (or, with --all, every registered) strategies, evaluators and provers."""
     registry = Registry.from_plugins()
@@ -131,6 +145,8 @@ def report(argv: list[str]) -> int:
         from strips_framework.bench.report import write_report
     except ImportError as error:
         raise StripsError(f"the report needs matplotlib ({error}): {EXTRA_HINT}") from None
+    from strips_framework.bench.results import read_rows
+
     rows = read_rows(args.results)
     folder = args.output or args.results.with_name(f"{args.results.stem}-report")
     pair = [name.strip() for name in args.pair.split(",")] if args.pair else None
