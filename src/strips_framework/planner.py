@@ -8,6 +8,7 @@ from pathlib import Path
 
 from attrs import frozen
 
+from strips_framework.capabilities import check_combination
 from strips_framework.config import Config
 from strips_framework.errors import InputError
 from strips_framework.plugins import Registry
@@ -23,11 +24,13 @@ class Planner:
 
     @classmethod
     def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
-        """A planner whose config is checked at once: every name is registered and every
-        option valid, so mistakes show before any problem is read."""
+        """A planner whose config is checked at once: every name is registered, every
+        option valid and the chosen implementations fit together (each has the
+        capabilities the others require), so mistakes show before any problem is read."""
         planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
         for kind in planner.config.choices:
             planner.config.build(planner.registry, kind)
+        check_combination(planner.registry, planner.config)
         return planner
 
     def load(self, path: Path) -> Problem:

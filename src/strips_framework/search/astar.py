@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import heapq
 import itertools
-import warnings
 from collections.abc import Iterator
 from typing import ClassVar
 
 from attrs import field, frozen, validators
 
+from strips_framework.capabilities import ADMISSIBLE, ANSWERS, OPTIMAL, Requirement
 from strips_framework.hookspecs import hookimpl
 from strips_framework.operators import OperatorInstance
 from strips_framework.problem import Problem
@@ -46,6 +46,13 @@ class AStarSearch:
     """
 
     name: ClassVar[str] = "astar"
+    capabilities: ClassVar[frozenset[str]] = frozenset({OPTIMAL})
+    requires: ClassVar[tuple[Requirement, ...]] = (
+        Requirement("prover", ANSWERS, "it finds the applicable operator instances from "
+                    "the bindings of precondition proofs"),
+        Requirement("evaluator", ADMISSIBLE, "its first plan is a shortest one only then",
+                    strict=False),
+    )
     max_answers: int = field(default=256, validator=[validators.instance_of(int), validators.gt(0)])
 
     def search(
@@ -57,12 +64,6 @@ class AStarSearch:
         evaluator: NodeEvaluator,
         limits: Limits,
     ) -> SearchResult:
-        if not evaluator.admissible:
-            warnings.warn(
-                f"evaluator {evaluator.name!r} is not admissible: the plan A* finds with it "
-                "may not be optimal",
-                stacklevel=2,
-            )
         goal_prover = GoalProver(problem, prover, limits.effort)
         tree = SearchTree(limits, goal_prover)
         top = (Goal(problem.goal),)

@@ -16,6 +16,7 @@ from typing import ClassVar
 
 from attrs import field, frozen, validators
 
+from strips_framework.capabilities import ANSWERS, Requirement
 from strips_framework.hookspecs import hookimpl
 from strips_framework.operators import OperatorInstance
 from strips_framework.problem import Problem
@@ -42,6 +43,11 @@ class MeansEndsSearch:
     """
 
     name: ClassVar[str] = "means-ends"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+    requires: ClassVar[tuple[Requirement, ...]] = (
+        Requirement("prover", ANSWERS, "it applies each operator with the parameter "
+                    "bindings of its precondition's proof"),
+    )
     max_goals: int = field(default=8, validator=[validators.instance_of(int), validators.gt(0)])
 
     def search(
