@@ -24,11 +24,14 @@ from typing import TYPE_CHECKING
 from attrs import frozen
 
 from strips_framework.errors import ConfigError, PluginError
+from strips_framework.logic.formulas import Atomic, atoms_of
+from strips_framework.logic.terms import EQUALITY as EQUALS_SIGN
 from strips_framework.plugins import KINDS
 
 if TYPE_CHECKING:
     from strips_framework.config import Config
     from strips_framework.plugins import Registry
+    from strips_framework.problem import Problem
 
 # Provers
 EQUALITY = "equality"
@@ -159,6 +162,43 @@ def check_combination(registry: Registry, config: Config) -> None:
                 raise ConfigError(message + f"does not declare it (it declares: {shown})")
             else:
                 warnings.warn(message + "does not declare it", stacklevel=3)
+
+
+def check_problem(problem: Problem, registry: Registry, config: Config) -> None:
+    """Raise :class:`ConfigError` if ``problem`` uses what the chosen prover does not
+    declare: axioms beyond ground facts (``quantified-axioms``) or ``=`` (``equality``);
+    warn if the prover declares nothing. Called before a search, so a prover is never
+    asked what it cannot answer halfway through."""
+    prover = registry.get("prover", config.choices["prover"].name)
+    have = declared(prover.cls, "prover")
+    for capability, where in _problem_needs(problem).items():
+        if have is not None and capability in have:
+            continue
+        message = (
+            f"{problem.source}: the problem has {where}, which needs a prover with "
+            f"{capability!r}, but prover {prover.name!r} ('prover.name' in {config.source}) "
+        )
+        if have is None:
+            warnings.warn(message + "declares no capabilities", stacklevel=3)
+        else:
+            raise ConfigError(message + "does not declare it")
+
+
+def _problem_needs(problem: Problem) -> dict[str, str]:
+    """The prover capabilities a problem needs, each with where the need comes from."""
+    needs = {}
+    if any(not isinstance(axiom, Atomic) for axiom in problem.axioms):
+        needs[QUANTIFIED_AXIOMS] = "axioms that are not ground facts"
+    formulas = [
+        ("the goal", problem.goal),
+        *(("the axioms", axiom) for axiom in problem.axioms),
+        *((f"the precondition of {s.name}", s.precondition) for s in problem.operators),
+    ]
+    for where, formula in formulas:
+        if any(atom[0] == EQUALS_SIGN for atom in atoms_of(formula)):
+            needs[EQUALITY] = f"'=' in {where}"
+            break
+    return needs
 
 
 def _article(words: str) -> str:

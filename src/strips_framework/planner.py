@@ -8,7 +8,7 @@ from pathlib import Path
 
 from attrs import frozen
 
-from strips_framework.capabilities import check_combination
+from strips_framework.capabilities import check_combination, check_problem
 from strips_framework.config import Config
 from strips_framework.errors import InputError
 from strips_framework.plugins import Registry
@@ -45,7 +45,9 @@ class Planner:
 
     def solve(self, problem: Problem) -> SearchResult:
         """Search for a plan with the strategy, prover, difference extractor, relevance
-        filter and evaluator of the config."""
+        filter and evaluator of the config (after checking that the prover handles what
+        the problem uses)."""
+        check_problem(problem, self.registry, self.config)
         build = self.config.build
         strategy = build(self.registry, "strategy")
         return strategy.search(
