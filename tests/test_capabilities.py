@@ -37,6 +37,13 @@ def test_every_declared_capability_of_a_registered_plugin_is_in_the_vocabulary()
                 assert need.capability in VOCABULARY[need.kind], (registration.name, need)
 
 
+def test_every_capability_is_documented_for_plugin_authors():
+    table = (EXAMPLES.parent / "docs" / "writing-plugins.md").read_text()
+    for kind, words in VOCABULARY.items():
+        for capability in words:
+            assert f"| `{capability}` |" in table, (kind, capability)
+
+
 def test_evaluators_keep_admissible_and_their_capabilities_consistent():
     for registration in Registry.from_plugins().registrations("evaluator"):
         cls = registration.cls
