@@ -104,11 +104,11 @@ def test_astar_with_an_inadmissible_evaluator_warns_at_config_time(tmp_path):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         Planner.create(config)
-    assert [str(w.message) for w in caught] == [
+    assert [str(w.message) for w in caught] == [(
         f"{tmp_path / 'strips.toml'}: search strategy 'astar' ('strategy.name') needs an "
         "evaluator with 'admissible' (its first plan is a shortest one only then), but "
         "evaluator 'paper' ('evaluator.name') does not declare it"
-    ]
+    )]
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         Planner.create(_write(tmp_path, 'strategy = "astar"\nevaluator = "breadth-first"\n'))
