@@ -10,7 +10,6 @@ the difference extractor computes the node's difference (III.C).
 from __future__ import annotations
 
 from collections.abc import Iterable
-from functools import lru_cache
 from typing import Any, ClassVar, Protocol
 
 from attrs import Attribute, field, frozen, validators
@@ -33,10 +32,9 @@ def _check_clauses(_task: Any, attribute: Attribute, clauses: Iterable[object]) 
             raise ValueError(f"ProofTask.{attribute.name}[{number}] ({clause!r}): {problem}")
 
 
-@lru_cache(maxsize=1 << 14)
 def _malformed(clause: Clause) -> str | None:
-    """What is wrong with a clause's literals, or ``None``; cached, since the world models
-    of one search share most of their clauses."""
+    """What is wrong with a clause's literals, or ``None``. Not cached: equal clauses may
+    differ in type (``1 == True``), and checking costs about 2% of a small proof."""
     for literal in clause.literals:
         if not (isinstance(literal, tuple) and len(literal) == 2 and type(literal[0]) is bool):
             return f"a literal must be a pair (positive: bool, atom), got {literal!r}"

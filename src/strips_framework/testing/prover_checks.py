@@ -75,10 +75,17 @@ def check_case(prover: TheoremProver, case: ProverCase, capabilities: AbstractSe
             f"{what}: no proof and no uncompleted proof, though the prover declares "
             "'uncompleted-proof'"
         )
-    if EFFORT_BOUND in capabilities and result.effort_used > case.task.effort:
-        raise ConformanceFailure(
-            f"{what}: effort_used {result.effort_used} exceeds the effort {case.task.effort}"
-        )
+    if EFFORT_BOUND in capabilities:
+        if result.effort_used > case.task.effort:
+            raise ConformanceFailure(
+                f"{what}: effort_used {result.effort_used} exceeds the effort {case.task.effort}"
+            )
+        again = ask(prover, case.task, what)
+        if (again.status, again.answers) != (result.status, result.answers):
+            raise ConformanceFailure(
+                f"{what}: asked twice, answers {result.status} {result.answers} then "
+                f"{again.status} {again.answers}; 'effort-bound' promises deterministic runs"
+            )
     return result
 
 
