@@ -167,3 +167,30 @@ def test_one_line_in_a_plugins_tests_runs_the_kit_and_reports_failures(pytester)
 
 def test_the_status_words_are_the_szs_ones():
     assert (PROVED, SATURATED, GAVE_UP) == ("Unsatisfiable", "Satisfiable", "GaveUp")
+
+
+def test_the_suites_build_the_class_with_the_options_given(pytester):
+    pytester.makepyfile(test_options=textwrap.dedent("""
+        from typing import ClassVar
+        from attrs import field, frozen, validators
+        from strips_framework.testing import EvaluatorConformance
+
+        @frozen
+        class Weighted:
+            name: ClassVar[str] = "weighted"
+            capabilities: ClassVar[frozenset[str]] = frozenset()
+            weight: float = field(validator=validators.instance_of(float))  # no default
+
+            def evaluate(self, node):
+                return node.cost * self.weight
+
+        class TestWeighted(EvaluatorConformance):
+            evaluator_class = Weighted
+            options = {"weight": 1.0}
+
+        class TestWeightless(EvaluatorConformance):
+            evaluator_class = Weighted
+    """))
+    result = pytester.runpytest_inprocess("-q", "-p", "no:cacheprovider", "-k", "declaration or three-boxes")
+    result.assert_outcomes(passed=3, failed=3)
+    result.stdout.fnmatch_lines(["*TestWeightless::test_declaration*"])

@@ -1,13 +1,17 @@
 """Checks every implementation class must pass, whatever its kind.
 
 The config builds implementations from TOML by keyword; it relies on the class being an
-attrs class with a ``name``, constructible with its defaults, whose options refuse wrong
+attrs class with a ``name``, constructible with its options, which refuse wrong
 values with ``TypeError``/``ValueError`` (which the config turns into a message naming
 the key). The capabilities a class declares are what the config checks combinations by
 and what the kit holds it to, so they must be declared and spelled as in the vocabulary.
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+from typing import Any
 
 import attrs
 
@@ -19,9 +23,11 @@ class ConformanceFailure(AssertionError):
     """A plugin does not do what the framework (or its own declaration) promises."""
 
 
-def check_declaration(cls: type, kind: str) -> frozenset[str]:
-    """The capabilities ``cls`` declares, after checking its name, attrs form, defaults,
-    capability words and requirements."""
+def check_declaration(
+    cls: type, kind: str, options: Mapping[str, Any] = MappingProxyType({})
+) -> frozenset[str]:
+    """The capabilities ``cls`` declares, after checking its name, attrs form, that
+    ``cls(**options)`` works, its capability words and its requirements."""
     name = getattr(cls, "name", None)
     if not isinstance(name, str) or not name:
         raise ConformanceFailure(f"{cls.__qualname__} has no 'name' class attribute (a string)")
@@ -31,10 +37,10 @@ def check_declaration(cls: type, kind: str) -> frozenset[str]:
             "fields so the config can pass them by keyword and 'strips plugins' can list them"
         )
     try:
-        cls()
+        cls(**options)
     except Exception as error:
         raise ConformanceFailure(
-            f"{name!r}: {cls.__qualname__}() fails with its defaults: {error!r}"
+            f"{name!r}: {cls.__qualname__}(**{dict(options)!r}) fails: {error!r}"
         ) from error
     capabilities = declared(cls, kind)
     if capabilities is None:
@@ -64,7 +70,9 @@ class _Wrong:
         return "<a value of no option's type>"
 
 
-def check_options_refuse_wrong_values(cls: type) -> None:
+def check_options_refuse_wrong_values(
+    cls: type, options: Mapping[str, Any] = MappingProxyType({})
+) -> None:
     """Each option given a value of no sensible type raises ``TypeError``/``ValueError``,
     which the config reports as 'bad value for KEY'; anything else would be a traceback
     or, worse, a silently broken run."""
@@ -72,7 +80,7 @@ def check_options_refuse_wrong_values(cls: type) -> None:
         if not field.init:
             continue
         try:
-            cls(**{field.alias: _Wrong()})
+            cls(**{**options, field.alias: _Wrong()})
         except (TypeError, ValueError):
             continue
         except Exception as error:

@@ -13,7 +13,7 @@ from collections.abc import Mapping
 from functools import cache
 from importlib import resources
 from pathlib import Path
-from types import SimpleNamespace
+from types import MappingProxyType, SimpleNamespace
 from typing import Any, ClassVar
 
 from attrs import define, field
@@ -54,11 +54,14 @@ def state_space(name: str) -> StateSpace:
     return StateSpace(load(name))
 
 
-def planner_for(kind: str, cls: type, choices: Mapping[str, str]) -> Planner:
-    """A planner using ``cls`` for ``kind`` and ``choices`` (over the defaults) for the
-    rest; ``cls`` is registered for the run unless an installed plugin already is it."""
-    names = {**DEFAULT_CHOICES, **choices, kind: cls.name}
-    config = Config.from_dict({**names, "limits": LIMITS}, f"<conformance kit: {kind} {cls.name!r}>")
+def planner_for(
+    kind: str, cls: type, choices: Mapping[str, str], options: Mapping[str, Any] = MappingProxyType({})
+) -> Planner:
+    """A planner using ``cls`` with ``options`` for ``kind`` and ``choices`` (over the
+    defaults) for the rest; ``cls`` is registered for the run unless an installed plugin
+    already is it."""
+    tables: dict[str, Any] = {**DEFAULT_CHOICES, **choices, kind: {**options, "name": cls.name}}
+    config = Config.from_dict({**tables, "limits": LIMITS}, f"<conformance kit: {kind} {cls.name!r}>")
     installed = Registry.from_plugins()
     if cls.name in installed.names(kind) and installed.get(kind, cls.name).cls is cls:
         return Planner.create(config)

@@ -58,6 +58,9 @@ class _Conformance:
     kind: ClassVar[str]
     #: The class attribute a plugin's test sets: ``prover_class`` and so on.
     slot: ClassVar[str]
+    #: Options to build the class with (as a config table would give them), when its
+    #: defaults are not what should be checked, or it has options without defaults.
+    options: ClassVar[Mapping[str, Any]] = {}
 
     @classmethod
     def implementation(cls) -> type:
@@ -68,10 +71,10 @@ class _Conformance:
         return declared(cls.implementation(), cls.kind) or frozenset()
 
     def test_declaration(self) -> None:
-        check_declaration(self.implementation(), self.kind)
+        check_declaration(self.implementation(), self.kind, self.options)
 
     def test_options_refuse_wrong_values(self) -> None:
-        check_options_refuse_wrong_values(self.implementation())
+        check_options_refuse_wrong_values(self.implementation(), self.options)
 
     def _require(self, capability: str) -> None:
         if capability not in self.capabilities():
@@ -79,17 +82,16 @@ class _Conformance:
 
 
 class ProverConformance(_Conformance):
-    """The kit for a theorem prover: set ``prover_class`` (and ``prover_options``, keyword
-    arguments for it, if the defaults are not what should be checked)."""
+    """The kit for a theorem prover: set ``prover_class`` (and ``options``, if the
+    defaults are not what should be checked)."""
 
     kind = "prover"
     slot = "prover_class"
     prover_class: ClassVar[type]
-    prover_options: ClassVar[Mapping[str, Any]] = {}
 
     @pytest.fixture
     def prover(self) -> TheoremProver:
-        return self.prover_class(**self.prover_options)
+        return self.prover_class(**self.options)
 
     @pytest.mark.parametrize("case", CASES, ids=lambda case: case.name)
     def test_known_answer(self, prover: TheoremProver, case: ProverCase) -> None:
@@ -110,7 +112,9 @@ class ProverConformance(_Conformance):
         check_refuses_unsupported(prover, self.capabilities())
 
 
-def _planner(kind: str, cls: type, choices: Mapping[str, str]) -> Planner:
+def _planner(
+    kind: str, cls: type, choices: Mapping[str, str], options: Mapping[str, Any]
+) -> Planner:
     """A kit planner, or a skip when a partner it needs is not installed."""
     registry = Registry.from_plugins()
     for partner, name in {**DEFAULT_CHOICES, **choices}.items():
@@ -119,7 +123,7 @@ def _planner(kind: str, cls: type, choices: Mapping[str, str]) -> Planner:
                 f"the kit runs {cls.name!r} with {KINDS[partner][1]} {name!r}, which is not "
                 f"installed; install it or set partners = {{{partner!r}: ...}}"
             )
-    return planner_for(kind, cls, choices)
+    return planner_for(kind, cls, choices, options)
 
 
 class EvaluatorConformance(_Conformance):
@@ -136,7 +140,8 @@ class EvaluatorConformance(_Conformance):
     @pytest.mark.parametrize("problem", PROBLEMS)
     @pytest.mark.parametrize("strategy", [MeansEndsSearch.name, AStarSearch.name])
     def test_solves_and_scores_within_the_true_cost(self, strategy: str, problem: str) -> None:
-        planner = _planner("evaluator", self.evaluator_class, {**self.partners, "strategy": strategy})
+        choices = {**self.partners, "strategy": strategy}
+        planner = _planner("evaluator", self.evaluator_class, choices, self.options)
         result, recorder = recorded_search(planner, problem)
         check_plan(planner, problem, result)
         if ADMISSIBLE in self.capabilities():
@@ -155,7 +160,8 @@ class StrategyConformance(_Conformance):
 
     @pytest.mark.parametrize("problem", PROBLEMS)
     def test_solves(self, problem: str) -> None:
-        check_solves(_planner("strategy", self.strategy_class, self.partners), problem)
+        planner = _planner("strategy", self.strategy_class, self.partners, self.options)
+        check_solves(planner, problem)
 
     @pytest.mark.parametrize("problem", PROBLEMS)
     def test_optimal_with_admissible_evaluators(self, problem: str) -> None:
@@ -170,4 +176,5 @@ class StrategyConformance(_Conformance):
             pytest.skip(f"no installed {KINDS['evaluator'][1]} declares 'admissible'")
         for evaluator in admissible:
             choices = {**DEFAULT_CHOICES, **self.partners, "evaluator": evaluator}
-            check_solves(_planner("strategy", self.strategy_class, choices), problem)
+            planner = _planner("strategy", self.strategy_class, choices, self.options)
+            check_solves(planner, problem)
