@@ -25,8 +25,9 @@ from strips_framework.logic.unify import unify
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.candidates import ModelTruth, surviving
+from strips_z3_prover.encoding import is_named
 from strips_z3_prover.outcome import Outcome, status_of
-from strips_z3_prover.session import GroundSession
+from strips_z3_prover.session import PLACEHOLDER, GroundSession
 
 
 def prove_ground(
@@ -77,7 +78,18 @@ class _Attempt:
                 break
         if answers:
             return Outcome(PROVED, tuple(answers))
+        if not any(is_named(c) for c in self.session.universe) and self._holds_for_all():
+            return Outcome(PROVED, ((),))
         return Outcome(SATURATED, lemmas=self._lemmas())
+
+    def _holds_for_all(self) -> bool:
+        """Whether the goal follows whatever the parameters denote (the answer then binds
+        none of them, as a resolution refutation would leave them). Only asked when no
+        constant could be an answer: otherwise any constant would have been one."""
+        arbitrary = {p: f"{PLACEHOLDER}!{p.name}!{p.tag}" for p in self.params}
+        self.session.admit(arbitrary.values())
+        result, _ = self._refute(self.task.negated_goal, arbitrary)
+        return result == z3.unsat
 
     def _lemmas(self) -> tuple[tuple, ...]:
         """Ground atoms that match a literal of the negated goal and that the axioms

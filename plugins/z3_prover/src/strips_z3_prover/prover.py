@@ -40,9 +40,12 @@ class Z3Prover:
 
     Options: ``rlimit_per_effort`` is the scale of the effort bound: an attempt may use
     ``effort * rlimit_per_effort`` units of Z3's deterministic resource counter (the
-    default makes the default effort of 300 about as generous as 300 given clauses of
-    the resolution prover). ``incremental`` keeps one solver for all tasks, so the
-    shared part of successive world models is encoded once (see :mod:`.session`);
+    default gives the default effort of 300 the 3e5 units a robot-world task needs at
+    most, grounding included, while effort 1 is too little for a pigeonhole
+    problem). ``incremental`` keeps one solver for all tasks, so the
+    shared part of successive world models is encoded once (see :mod:`.session`): a run
+    is then reproducible as a whole, while the effort one task uses depends on what the
+    session already holds (``false`` makes each task reproducible alone, and slower);
     ``max_ground_instances`` is the most ground instances one task may add before its
     attempt uses quantifiers instead; ``seed`` is Z3's random seed; ``max_residuals``
     bounds the uncompleted proof of a failed attempt.
@@ -53,7 +56,7 @@ class Z3Prover:
         {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
     )
 
-    rlimit_per_effort: int = field(default=5000, validator=[instance_of(int), ge(1)])
+    rlimit_per_effort: int = field(default=1000, validator=[instance_of(int), ge(1)])
     incremental: bool = field(default=True, validator=instance_of(bool))
     max_ground_instances: int = field(default=200_000, validator=[instance_of(int), ge(0)])
     seed: int = field(default=0, validator=[instance_of(int), ge(0)])
