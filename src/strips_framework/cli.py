@@ -16,7 +16,7 @@ from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
 from strips_framework.planner import Planner, is_pddl
-from strips_framework.plugins import KINDS
+from strips_framework.plugins import KINDS, Registration
 from strips_framework.search.forward.budget import LimitReached
 from strips_framework.search.forward.result import ForwardResult
 
@@ -53,7 +53,9 @@ def _parser() -> argparse.ArgumentParser:
     prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
     prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
     prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
-    prove.add_argument("--effort", type=int, help="prover effort (default: [limits] effort)")
+    prove.add_argument(
+        "--effort", type=_positive, help="prover effort (default: [limits] effort)"
+    )
 
     validate = commands.add_parser(
         "validate", help="replay a plan in the independent simulator and check the goal"
@@ -71,6 +73,17 @@ def _parser() -> argparse.ArgumentParser:
 
     commands.add_parser("plugins", help="list the registered implementations and options")
     return parser
+
+
+def _positive(text: str) -> int:
+    """An argparse type: an integer >= 1 (a bad one is a usage error, not a traceback)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}")
+    return value
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -269,6 +282,33 @@ def _plugins(planner: Planner) -> int:
             doc = (registration.cls.__doc__ or "").strip().splitlines()
             if doc:
                 print(f"      {doc[0]}")
+            for line in _capability_lines(registration):
+                print(f"      {line}")
             for name, default in registration.options():
                 print(f"      {name} = {default!r}")
     return 0
+
+
+def _capability_lines(registration: Registration) -> list[str]:
+    """``capabilities: ...`` (unknown words marked) and ``requires: ...``, for the kinds
+    that have a capability vocabulary or when the class declares anything."""
+    from strips_framework.capabilities import VOCABULARY, declared, requirements, unknown
+
+    kind, cls = registration.kind, registration.cls
+    have = declared(cls, kind)
+    needs = requirements(cls)
+    lines = []
+    if have is not None or VOCABULARY.get(kind):
+        if have is None:
+            lines.append("capabilities: undeclared")
+        else:
+            strange = unknown(have, kind)
+            words = [c + (" (unknown)" if c in strange else "") for c in sorted(have)]
+            lines.append(f"capabilities: {', '.join(words) or 'none'}")
+    if needs:
+        shown = [
+            f"{KINDS[n.kind][1]} with {n.capability}" + ("" if n.strict else " (soft: a warning if missing)")
+            for n in needs
+        ]
+        lines.append(f"requires: {'; '.join(shown)}")
+    return lines

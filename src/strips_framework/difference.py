@@ -14,6 +14,7 @@ from typing import ClassVar
 
 from attrs import field, frozen, validators
 
+from strips_framework.capabilities import UNCOMPLETED_PROOF, Requirement
 from strips_framework.logic.clauses import Clause
 from strips_framework.proving import ProofResult
 from strips_framework.search.node import Difference
@@ -24,6 +25,11 @@ class UncompletedProofDifference:
     """The negated goal and its descendants, smallest first, at most ``max_clauses``."""
 
     name: ClassVar[str] = "uncompleted-proof"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+    requires: ClassVar[tuple[Requirement, ...]] = (
+        Requirement("prover", UNCOMPLETED_PROOF, "without it a difference is just the "
+                    "negated goal", strict=False),
+    )
     max_clauses: int = field(default=60, validator=[validators.instance_of(int), validators.gt(0)])
 
     def extract(self, result: ProofResult, negated_goal: Sequence[Clause]) -> Difference:

@@ -7,7 +7,9 @@ class of each kind by its ``name``, and the search calls the chosen objects dire
 
 Every implementation class has a ``name`` class attribute and is an attrs class whose
 fields are its options: the config passes ``[prover.options]`` and the like as keyword
-arguments, and ``strips plugins`` lists the fields with their defaults.
+arguments, and ``strips plugins`` lists the fields with their defaults. It declares
+``capabilities`` and, if it needs something of the other components, ``requires`` (see
+:mod:`strips_framework.capabilities`); :mod:`strips_framework.testing` checks both.
 """
 
 from __future__ import annotations
@@ -70,8 +72,9 @@ def strips_register_evaluators() -> list[type[NodeEvaluator]]:
 
     An evaluator scores a search node (lower is better); strategies expand the best-scored
     node next (paper, II.B and V). An evaluator that never overestimates the number of
-    operator applications still needed, added to those made so far, sets
-    ``admissible = True`` so that optimal strategies can rely on it.
+    operator applications still needed, added to those made so far, declares the
+    capability ``admissible`` (and sets ``admissible = True``) so that optimal strategies
+    can rely on it.
     """
 
 

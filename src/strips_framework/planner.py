@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 import attrs
 from attrs import frozen
 
+from strips_framework.capabilities import check_combination, check_problem
 from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.plugins import Registry
@@ -43,10 +44,12 @@ class Planner:
     @classmethod
     def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
         """A planner whose config is checked at once: every component the strategy uses is
-        registered and its options valid, so mistakes show before any problem is read."""
+        registered, its options valid and the chosen implementations fit together (each has
+        the capabilities the others require), so mistakes show before any problem is read."""
         planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
         for kind in planner.kinds_used():
             planner.config.build(planner.registry, kind)
+        check_combination(planner.registry, planner.config, planner.kinds_used())
         return planner
 
     def kinds_used(self) -> tuple[str, ...]:
@@ -115,7 +118,9 @@ class Planner:
 
     def solve(self, problem: Problem) -> SearchResult:
         """Search for a plan with the strategy, prover, difference extractor, relevance
-        filter and evaluator of the config (a world-model strategy)."""
+        filter and evaluator of the config (a world-model strategy; after checking that the prover handles what
+        the problem uses)."""
+        check_problem(problem, self.registry, self.config)
         build = self.config.build
         strategy = build(self.registry, "strategy")
         if getattr(strategy, "works_on", "problem") == GROUND_TASK:

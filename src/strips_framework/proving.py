@@ -9,14 +9,56 @@ the difference extractor computes the node's difference (III.C).
 
 from __future__ import annotations
 
-from typing import ClassVar, Protocol
+from collections.abc import Iterable
+from typing import Any, ClassVar, Protocol
 
-from attrs import field, frozen
+from attrs import Attribute, field, frozen, validators
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param, Term
 
 Answer = tuple[tuple[Param, Term], ...]
+
+
+def _check_clauses(_task: Any, attribute: Attribute, clauses: Iterable[object]) -> None:
+    for number, clause in enumerate(clauses, start=1):
+        if not isinstance(clause, Clause):
+            raise TypeError(
+                f"ProofTask.{attribute.name}[{number}] must be a Clause, "
+                f"not {type(clause).__name__}"
+            )
+        problem = _malformed(clause)
+        if problem:
+            raise ValueError(f"ProofTask.{attribute.name}[{number}] ({clause!r}): {problem}")
+
+
+def _malformed(clause: Clause) -> str | None:
+    """What is wrong with a clause's literals, or ``None``. Not cached: equal clauses may
+    differ in type (``1 == True``), and checking costs about 2% of a small proof."""
+    for literal in clause.literals:
+        if not (isinstance(literal, tuple) and len(literal) == 2 and type(literal[0]) is bool):
+            return f"a literal must be a pair (positive: bool, atom), got {literal!r}"
+        atom = literal[1]
+        if type(atom) is not tuple or not atom or type(atom[0]) is not str or not atom[0]:
+            return f"an atom must be a tuple (predicate, *args), got {atom!r}"
+        bad = next((t for arg in atom[1:] for t in _bad_terms(arg)), None)
+        if bad is not None:
+            return (
+                f"{bad!r} in {atom!r} is not a term (expected a variable int >= 0, a "
+                "constant str, a Param or a tuple (functor, *args))"
+            )
+    return None
+
+
+def _bad_terms(term: object) -> Iterable[object]:
+    if type(term) is tuple:
+        if not term or type(term[0]) is not str:
+            yield term
+        else:
+            for arg in term[1:]:
+                yield from _bad_terms(arg)
+    elif not (type(term) is str and term or type(term) is Param or type(term) is int and term >= 0):
+        yield term
 
 
 @frozen
@@ -29,13 +71,16 @@ class ProofTask:
     on after the first refutation and collect distinct parameter bindings. With
     ``unique_names`` distinct constants denote distinct objects, so ``a = b`` is false for
     constants ``a`` and ``b`` (the paper's "predicate evaluation" of equality).
+
+    A malformed task is refused here (``TypeError``/``ValueError`` naming the clause and
+    what was expected), so no prover ever sees one.
     """
 
-    axioms: tuple[Clause, ...] = field(converter=tuple)
-    negated_goal: tuple[Clause, ...] = field(converter=tuple)
-    effort: int = 1000
-    max_answers: int = 1
-    unique_names: bool = False
+    axioms: tuple[Clause, ...] = field(converter=tuple, validator=_check_clauses)
+    negated_goal: tuple[Clause, ...] = field(converter=tuple, validator=_check_clauses)
+    effort: int = field(default=1000, validator=[validators.instance_of(int), validators.ge(1)])
+    max_answers: int = field(default=1, validator=[validators.instance_of(int), validators.ge(1)])
+    unique_names: bool = field(default=False, validator=validators.instance_of(bool))
 
 
 #: SZS statuses a prover reports (https://tptp.org/TPTP/TPTP/SZSOntology): ``Unsatisfiable``

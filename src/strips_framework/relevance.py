@@ -50,6 +50,7 @@ class AddListRelevance:
     """
 
     name: ClassVar[str] = "add-list"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
 
     def relevant(
         self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel

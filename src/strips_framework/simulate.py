@@ -101,11 +101,16 @@ def replay(problem: Problem, plan: Sequence[str]) -> Replay:
     winning over others that differ only in case. Raises :class:`SimulationError` when the
     problem has non-Horn axioms, or uses equality without unique names.
     """
-    return _Simulator(problem).run(plan)
+    return Simulator(problem).run(plan)
 
 
-class _Simulator:
-    """One problem's rules and name tables, set up once for the replay of a plan."""
+class Simulator:
+    """One problem's rules and name tables, set up once for the replay of a plan.
+
+    Its state operations (:meth:`close`, :meth:`holds`, :meth:`apply`) are public so that
+    the conformance kit can compute optimal plan lengths with the same semantics as the
+    replay, independently of the planner.
+    """
 
     def __init__(self, problem: Problem) -> None:
         self.problem = problem
@@ -184,6 +189,11 @@ class _Simulator:
                                 by_predicate[grounded[0], len(grounded)].add(grounded)
                                 changed = True
         return frozenset(facts)
+
+    def apply(self, schema: OperatorSchema, binding: Env, state: State) -> State:
+        """The state after the ground step ``schema`` with ``binding`` (no precondition
+        check)."""
+        return _apply(schema, binding, state)
 
     def holds(self, formula: Formula, env: Env, state: State) -> bool:
         """Whether ``formula`` is true in ``state`` under the closed world."""
@@ -292,9 +302,10 @@ def _matches(pattern: Term, term: Term) -> bool:
     return pattern == term
 
 
-def _match(pattern: Term | Var, term: Term, env: dict) -> dict | None:
-    """Extend ``env`` so that ``pattern`` (with variables) equals the ground ``term``."""
-    if isinstance(pattern, Var):
+def match_pattern(pattern: Term | Var, term: Term, env: dict) -> dict | None:
+    """Extend ``env`` so that ``pattern`` (with variables or parameters) equals the ground
+    ``term``; ``None`` when it cannot."""
+    if isinstance(pattern, (Var, Param)):
         if pattern in env:
             return env if env[pattern] == term else None
         return {**env, pattern: term}
@@ -302,7 +313,7 @@ def _match(pattern: Term | Var, term: Term, env: dict) -> dict | None:
         if type(term) is not tuple or len(term) != len(pattern) or term[0] != pattern[0]:
             return None
         for p, t in zip(pattern[1:], term[1:]):
-            env = _match(p, t, env)
+            env = match_pattern(p, t, env)
             if env is None:
                 return None
         return env
@@ -318,7 +329,7 @@ def _body_matches(
         return
     first, rest = body[0], body[1:]
     for fact in facts.get((first[0], len(first)), ()):
-        extended = _match(first, fact, env)
+        extended = match_pattern(first, fact, env)
         if extended is not None:
             yield from _body_matches(rest, facts, extended)
 

@@ -15,6 +15,8 @@ from typing import TYPE_CHECKING, ClassVar
 
 from attrs import field, frozen, validators
 
+from strips_framework.capabilities import ANSWERS, Requirement
+
 if TYPE_CHECKING:
     from strips_framework.problem import Problem
     from strips_framework.proving import TheoremProver
@@ -36,6 +38,11 @@ class MeansEndsSearch:
     """
 
     name: ClassVar[str] = "means-ends"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+    requires: ClassVar[tuple[Requirement, ...]] = (
+        Requirement("prover", ANSWERS, "it applies each operator with the parameter "
+                    "bindings of its precondition's proof"),
+    )
     max_goals: int = field(default=8, validator=[validators.instance_of(int), validators.gt(0)])
 
     def search(

@@ -15,11 +15,12 @@ from __future__ import annotations
 
 import heapq
 import itertools
-import warnings
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, ClassVar
 
 from attrs import field, frozen, validators
+
+from strips_framework.capabilities import ADMISSIBLE, ANSWERS, OPTIMAL, Requirement
 
 if TYPE_CHECKING:
     from strips_framework.operators import OperatorInstance
@@ -45,6 +46,13 @@ class ModelAStarSearch:
     """
 
     name: ClassVar[str] = "model-astar"
+    capabilities: ClassVar[frozenset[str]] = frozenset({OPTIMAL})
+    requires: ClassVar[tuple[Requirement, ...]] = (
+        Requirement("prover", ANSWERS, "it finds the applicable operator instances from "
+                    "the bindings of precondition proofs"),
+        Requirement("evaluator", ADMISSIBLE, "its first plan is a shortest one only then",
+                    strict=False),
+    )
     max_answers: int = field(default=256, validator=[validators.instance_of(int), validators.gt(0)])
 
     def search(
@@ -61,13 +69,6 @@ class ModelAStarSearch:
         from strips_framework.search.node import Goal
         from strips_framework.search.result import EXHAUSTED, SOLVED
         from strips_framework.search.tree import LimitReached, SearchTree
-
-        if not evaluator.admissible:
-            warnings.warn(
-                f"evaluator {evaluator.name!r} is not admissible: the plan A* finds with it "
-                "may not be optimal",
-                stacklevel=2,
-            )
         goal_prover = GoalProver(problem, prover, limits.effort)
         tree = SearchTree(limits, goal_prover)
         top = (Goal(problem.goal),)

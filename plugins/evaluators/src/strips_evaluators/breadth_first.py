@@ -6,6 +6,7 @@ from typing import ClassVar
 
 from attrs import frozen
 
+from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.search.node import Node
 
 
@@ -21,6 +22,7 @@ class BreadthFirst:
 
     name: ClassVar[str] = "breadth-first"
     admissible: ClassVar[bool] = True
+    capabilities: ClassVar[frozenset[str]] = frozenset({ADMISSIBLE})
 
     def evaluate(self, node: Node) -> float:
         return float(node.cost)

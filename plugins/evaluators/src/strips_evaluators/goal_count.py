@@ -30,6 +30,7 @@ class GoalCount:
 
     name: ClassVar[str] = "goal-count"
     admissible: ClassVar[bool] = False
+    capabilities: ClassVar[frozenset[str]] = frozenset()
 
     cost_weight: float = weight(1.0)
 

@@ -7,6 +7,7 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_evaluators.features import subgoals
+from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.search.node import Node
 
 
@@ -36,6 +37,7 @@ class GoalListBound:
 
     name: ClassVar[str] = "astar-goals"
     admissible: ClassVar[bool] = True
+    capabilities: ClassVar[frozenset[str]] = frozenset({ADMISSIBLE})
 
     def evaluate(self, node: Node) -> float:
         unproved = 1 if node.difference is not None else 0

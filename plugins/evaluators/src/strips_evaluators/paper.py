@@ -60,6 +60,7 @@ class PaperEvaluator:
 
     name: ClassVar[str] = "paper"
     admissible: ClassVar[bool] = False
+    capabilities: ClassVar[frozenset[str]] = frozenset()
 
     goal_weight: float = weight(1.0)
     predicate_weight: float = weight(0.5)

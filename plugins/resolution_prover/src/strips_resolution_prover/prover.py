@@ -15,6 +15,15 @@ from typing import ClassVar
 from attrs import define, field
 from attrs.validators import ge, instance_of, optional
 
+from strips_framework.capabilities import (
+    ANSWERS,
+    COMPLETE,
+    EFFORT_BOUND,
+    EQUALITY,
+    QUANTIFIED_AXIOMS,
+    SOUND,
+    UNCOMPLETED_PROOF,
+)
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
 from strips_resolution_prover.equality import (
@@ -51,6 +60,11 @@ class ResolutionProver:
     """
 
     name: ClassVar[str] = "resolution"
+    #: With the default options; size limits (``max_clause_literals`` and the like) give
+    #: up on what they discard, which keeps the prover sound but not complete.
+    capabilities: ClassVar[frozenset[str]] = frozenset(
+        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, COMPLETE, EFFORT_BOUND}
+    )
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
     unit_preference: int = field(default=4, validator=[instance_of(int), ge(0)])

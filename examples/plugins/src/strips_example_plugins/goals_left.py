@@ -1,0 +1,34 @@
+"""An admissible evaluator: operators applied, plus one per goal above G0."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from attrs import field, frozen, validators
+
+from strips_framework.capabilities import ADMISSIBLE
+from strips_framework.search.node import Node
+
+
+@frozen
+class GoalsLeft:
+    """Operators applied plus goals left above G0, ties broken towards deeper nodes.
+
+    Each goal above G0 is the precondition of an operator the plan must still apply, so
+    the count never exceeds the cost still needed: the score is admissible.
+    ``tie_break`` (< 1) is subtracted per goal to prefer nodes that subgoaled further among
+    equals; 0 turns it off. A score lowered this way stays admissible.
+    """
+
+    name: ClassVar[str] = "goals-left"
+    capabilities: ClassVar[frozenset[str]] = frozenset({ADMISSIBLE})
+    admissible: ClassVar[bool] = True
+
+    tie_break: float = field(
+        default=0.01,
+        validator=[validators.instance_of(float), validators.ge(0.0), validators.lt(1.0)],
+    )
+
+    def evaluate(self, node: Node) -> float:
+        goals_left = len(node.goals) - 1
+        return node.cost + goals_left * (1 - self.tie_break)

@@ -1,0 +1,48 @@
+"""The effort bound as a Z3 resource limit.
+
+Z3's ``rlimit`` counts internal operations, not seconds, so a run gives the same answer on
+any machine and under any load. One attempt (one :class:`~strips_framework.proving.ProofTask`)
+gets ``effort * scale`` units in all, shared by its checks: each check may use what the
+previous ones left. Z3 notices the limit between operations, so a check may overrun it
+slightly; the overrun is charged, and the next check gets nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import z3
+
+
+class Budget:
+    """What is left of one attempt's resource limit."""
+
+    def __init__(self, effort: int, scale: int) -> None:
+        self.effort = effort
+        self.scale = scale
+        self.used = 0
+
+    @property
+    def exhausted(self) -> bool:
+        return self.used >= self.effort * self.scale
+
+    def check(self, solver: z3.Solver, assumptions: Sequence[z3.BoolRef] = ()) -> z3.CheckSatResult:
+        """``solver.check`` within the remaining limit (``unknown`` once it is spent)."""
+        if self.exhausted:
+            return z3.unknown
+        before = _count(solver)
+        solver.set("rlimit", self.effort * self.scale - self.used)
+        result = solver.check(*assumptions)
+        self.used += _count(solver) - before
+        return result
+
+    def effort_used(self) -> int:
+        """The units used, in the config's effort unit (rounded up, at most the effort)."""
+        return min(self.effort, -(-self.used // self.scale))
+
+
+def _count(solver: z3.Solver) -> int:
+    """Z3's resource counter (absent until the first check)."""
+    statistics = solver.statistics()
+    names = statistics.keys()
+    return int(statistics.get_key_value("rlimit count")) if "rlimit count" in names else 0

@@ -1,0 +1,190 @@
+"""Which parameter instances a model leaves possible as answers.
+
+An instance θ is an answer when G(θ) holds in *every* model of the axioms, so it must hold
+in each model Z3 hands us: in the first model of the axioms, and in each countermodel of a
+rejected candidate. Evaluating G(θ) in a model for all θ at once prunes the candidates far
+faster than asking Z3 about each θ (the robot world has 27 constants, so a precondition
+with two open parameters has 729 instances, of which a model typically keeps a handful).
+
+G(θ) holds in a ground model exactly when some clause of ¬G(θ) has an instance, over the
+universe, whose literals are all false. Finding those instances is a conjunctive query
+over the model's tables: a negated atom must be true, so it is matched against the
+atom's true tuples, which binds its variables and parameters; the other literals are
+tested once their terms are bound (unbound ones range over the universe).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from itertools import product
+
+import z3
+
+from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.logic.terms import EQUALITY, Param, Term
+from strips_z3_prover.encoding import Vocabulary, is_named
+
+Element = int  # a model element, by the id of its Z3 value
+Table = frozenset[tuple[Element, ...]]  # the tuples where a predicate is true
+
+
+class ModelTruth:
+    """Truth of ground atoms in one model, over the values of the universe's constants."""
+
+    def __init__(self, model: z3.ModelRef, vocabulary: Vocabulary, universe: Sequence[str]):
+        self.model = model
+        self.vocabulary = vocabulary
+        # Elements are compared by AST id, which Z3 reuses once an AST is freed: the
+        # values stay referenced here for as long as the ids are used.
+        self._values = [model.eval(vocabulary.constant(name), True) for name in universe]
+        self.value = {name: value.get_id() for name, value in zip(universe, self._values)}
+        self.elements = sorted(set(self.value.values()))
+        self.names: dict[Element, list[str]] = {}
+        self._representative: dict[Element, z3.ExprRef] = {}
+        for name in universe:
+            self._representative.setdefault(self.value[name], vocabulary.constant(name))
+            if is_named(name):
+                self.names.setdefault(self.value[name], []).append(name)
+        self._tables: dict[tuple[str, int], Table] = {}
+        self._interpreted = {declaration.name() for declaration in model.decls()}
+
+    def table(self, predicate: str, arity: int) -> Table:
+        key = (predicate, arity)
+        found = self._tables.get(key)
+        if found is None:
+            found = self._tables[key] = self._read_table(predicate, arity)
+        return found
+
+    def _read_table(self, predicate: str, arity: int) -> Table:
+        """The true tuples, from the interpretation's entries when it is a finite table,
+        else (a model of quantified axioms defines predicates by expressions) by
+        evaluating the predicate on every tuple of the constants' values."""
+        symbol = self.vocabulary.predicate(predicate, arity)
+        if arity == 0:
+            return frozenset({()}) if z3.is_true(self.model.eval(symbol, True)) else frozenset()
+        if symbol.name() not in self._interpreted:  # unconstrained: false in the completion
+            return frozenset()
+        entries = self.model[symbol].as_list()
+        self._values.append(entries)
+        default = entries[-1]
+        if z3.is_false(default) and all(_is_value(x) for entry in entries[:-1] for x in entry):
+            return frozenset(
+                tuple(arg.get_id() for arg in entry[:-1])
+                for entry in entries[:-1]
+                if z3.is_true(entry[-1])
+            )
+        return frozenset(
+            row
+            for row in product(self.elements, repeat=arity)
+            if z3.is_true(self.model.eval(symbol(*[self._representative[e] for e in row]), True))
+        )
+
+    def true_atoms(self, predicates: Sequence[tuple[str, int]]) -> list[tuple]:
+        """The atoms of ``predicates`` over named constants that are true in the model."""
+        found = []
+        for predicate, arity in predicates:
+            for row in sorted(self.table(predicate, arity)):
+                if all(e in self.names for e in row):
+                    found.extend(
+                        (predicate, *names) for names in product(*(self.names[e] for e in row))
+                    )
+        return found
+
+    def holds_named(self, atom: tuple) -> bool:
+        return self.holds(atom, tuple(self.value[name] for name in atom[1:]))
+
+    def holds(self, atom: tuple, elements: tuple[Element, ...]) -> bool:
+        if atom[0] == EQUALITY and len(atom) == 3:
+            return elements[0] == elements[1]
+        return elements in self.table(atom[0], len(atom) - 1)
+
+
+def surviving(
+    truth: ModelTruth, negated_goal: Sequence[Clause], params: Sequence[Param]
+) -> set[tuple[str, ...]]:
+    """The name tuples θ (in ``params`` order) for which G(θ) holds in the model."""
+    named = [e for e in truth.elements if e in truth.names]
+    found: set[tuple[str, ...]] = set()
+    for clause in negated_goal:
+        for binding in _falsifying(truth, _ordered(clause.literals), {}, named):
+            choices = [
+                truth.names[binding[p]]
+                if p in binding
+                else [n for e in named for n in truth.names[e]]
+                for p in params
+            ]
+            found.update(product(*choices))
+    return found
+
+
+def _ordered(literals: Sequence[Literal]) -> list[Literal]:
+    """Negated atoms first: matching them against true tuples binds the most."""
+    return sorted(literals, key=lambda lit: (lit[0] or lit[1][0] == EQUALITY, len(lit[1])))
+
+
+def _falsifying(
+    truth: ModelTruth,
+    literals: list[Literal],
+    binding: dict[Term, Element],
+    named: list[Element],
+) -> Iterator[dict[Term, Element]]:
+    """Extensions of ``binding`` (variables and parameters to elements) under which every
+    literal of ``literals`` is false in the model."""
+    if not literals:
+        yield binding
+        return
+    (positive, atom), rest = literals[0], literals[1:]
+    args = atom[1:]
+    generator = not positive and atom[0] != EQUALITY
+    for extended in _bindings(truth, atom, args, binding, named, generator):
+        values = tuple(_value(truth, a, extended) for a in args)
+        if truth.holds(atom, values) != positive:
+            yield from _falsifying(truth, rest, extended, named)
+
+
+def _bindings(
+    truth: ModelTruth,
+    atom: tuple,
+    args: tuple[Term, ...],
+    binding: dict[Term, Element],
+    named: list[Element],
+    from_table: bool,
+) -> Iterator[dict[Term, Element]]:
+    """Ways to bind the unbound variables and parameters of ``args``."""
+    open_terms = list(dict.fromkeys(a for a in args if _open(a, binding)))
+    if not open_terms:
+        yield binding
+        return
+    if from_table:
+        for row in truth.table(atom[0], len(args)):
+            extended = dict(binding)
+            if all(_match(truth, a, e, extended) for a, e in zip(args, row)):
+                yield extended
+        return
+    domains = [named if type(t) is Param else truth.elements for t in open_terms]
+    for values in product(*domains):
+        yield {**binding, **dict(zip(open_terms, values))}
+
+
+def _open(term: Term, binding: dict[Term, Element]) -> bool:
+    return (type(term) is int or type(term) is Param) and term not in binding
+
+
+def _match(truth: ModelTruth, term: Term, element: Element, binding: dict[Term, Element]) -> bool:
+    if type(term) is str:
+        return truth.value[term] == element
+    bound = binding.get(term)
+    if bound is not None:
+        return bound == element
+    if type(term) is Param and element not in truth.names:
+        return False  # a parameter is only ever bound to a named constant
+    binding[term] = element
+    return True
+
+
+def _value(truth: ModelTruth, term: Term, binding: dict[Term, Element]) -> Element:
+    return truth.value[term] if type(term) is str else binding[term]
+
+
+def _is_value(expression: z3.ExprRef) -> bool:
+    return z3.is_true(expression) or z3.is_false(expression) or expression.num_args() == 0

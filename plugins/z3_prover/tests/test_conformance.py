@@ -1,0 +1,19 @@
+"""The conformance kit, run against the Z3 prover in both of its modes."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import ClassVar
+
+from strips_z3_prover import Z3Prover
+
+from strips_framework.testing import ProverConformance
+
+
+class TestZ3Prover(ProverConformance):
+    prover_class = Z3Prover
+
+
+class TestZ3ProverWithoutSession(ProverConformance):
+    prover_class = Z3Prover
+    options: ClassVar[Mapping[str, object]] = {"incremental": False}

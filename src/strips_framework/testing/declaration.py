@@ -1,0 +1,94 @@
+"""Checks every implementation class must pass, whatever its kind.
+
+The config builds implementations from TOML by keyword; it relies on the class being an
+attrs class with a ``name``, constructible with its options, which refuse wrong
+values with ``TypeError``/``ValueError`` (which the config turns into a message naming
+the key). The capabilities a class declares are what the config checks combinations by
+and what the kit holds it to, so they must be declared and spelled as in the vocabulary.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+from typing import Any
+
+import attrs
+
+from strips_framework.capabilities import VOCABULARY, declared, requirements, unknown
+from strips_framework.plugins import KINDS
+
+
+class ConformanceFailure(AssertionError):
+    """A plugin does not do what the framework (or its own declaration) promises."""
+
+
+def check_declaration(
+    cls: type, kind: str, options: Mapping[str, Any] = MappingProxyType({})
+) -> frozenset[str]:
+    """The capabilities ``cls`` declares, after checking its name, attrs form, that
+    ``cls(**options)`` works, its capability words and its requirements."""
+    name = getattr(cls, "name", None)
+    if not isinstance(name, str) or not name:
+        raise ConformanceFailure(f"{cls.__qualname__} has no 'name' class attribute (a string)")
+    if not attrs.has(cls):
+        raise ConformanceFailure(
+            f"{name!r}: {cls.__qualname__} is not an attrs class; its options must be attrs "
+            "fields so the config can pass them by keyword and 'strips plugins' can list them"
+        )
+    try:
+        cls(**options)
+    except Exception as error:
+        raise ConformanceFailure(
+            f"{name!r}: {cls.__qualname__}(**{dict(options)!r}) fails: {error!r}"
+        ) from error
+    capabilities = declared(cls, kind)
+    if capabilities is None:
+        raise ConformanceFailure(
+            f"{name!r} declares no capabilities: add 'capabilities: ClassVar[frozenset[str]]' "
+            f"with words from {sorted(VOCABULARY[kind]) or 'none (an empty set)'}"
+        )
+    strange = unknown(capabilities, kind)
+    if strange:
+        raise ConformanceFailure(
+            f"{name!r} declares capabilities not in the {kind} vocabulary: {strange} "
+            f"(known: {sorted(VOCABULARY[kind])})"
+        )
+    for need in requirements(cls):
+        if need.kind not in KINDS or need.capability not in VOCABULARY.get(need.kind, {}):
+            raise ConformanceFailure(
+                f"{name!r} requires {need.capability!r} of a {need.kind!r}, which is not a "
+                "capability of that kind in the vocabulary"
+            )
+    return capabilities
+
+
+class _Wrong:
+    """A value no option accepts."""
+
+    def __repr__(self) -> str:
+        return "<a value of no option's type>"
+
+
+def check_options_refuse_wrong_values(
+    cls: type, options: Mapping[str, Any] = MappingProxyType({})
+) -> None:
+    """Each option given a value of no sensible type raises ``TypeError``/``ValueError``,
+    which the config reports as 'bad value for KEY'; anything else would be a traceback
+    or, worse, a silently broken run."""
+    for field in attrs.fields(cls):
+        if not field.init:
+            continue
+        try:
+            cls(**{**options, field.alias: _Wrong()})
+        except (TypeError, ValueError):
+            continue
+        except Exception as error:
+            raise ConformanceFailure(
+                f"{cls.name!r}: option {field.name!r} given a wrong value raises "
+                f"{type(error).__name__} ({error}); it must raise TypeError or ValueError"
+            ) from error
+        raise ConformanceFailure(
+            f"{cls.name!r}: option {field.name!r} accepts {_Wrong()!r}; give it a validator "
+            "(e.g. attrs.validators.instance_of) so a config mistake is reported by key"
+        )

@@ -1,0 +1,23 @@
+"""The conformance kit run against every registered prover, evaluator and strategy: the
+builtins, the plugins of this repository and whatever else is installed (z3, say)."""
+
+from strips_framework.plugins import Registry
+from strips_framework.testing import (
+    EvaluatorConformance,
+    ProverConformance,
+    StrategyConformance,
+)
+
+SUITES = {
+    "prover": (ProverConformance, "prover_class"),
+    "evaluator": (EvaluatorConformance, "evaluator_class"),
+    "strategy": (StrategyConformance, "strategy_class"),
+}
+
+for kind, (suite, attribute) in SUITES.items():
+    for registration in Registry.from_plugins().registrations(kind):
+        if getattr(registration.cls, "works_on", None) == "ground-task":
+            continue
+        title = "".join(part.capitalize() for part in registration.name.replace("_", "-").split("-"))
+        name = f"Test{kind.capitalize()}{title}"
+        globals()[name] = type(name, (suite,), {attribute: registration.cls})

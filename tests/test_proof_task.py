@@ -1,0 +1,31 @@
+"""A ProofTask refuses malformed values, so no prover ever sees one."""
+
+import pytest
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Param
+from strips_framework.proving import ProofTask
+
+GOAL = [Clause([(False, ("P", Param("m")))])]
+
+
+@pytest.mark.parametrize(("options", "error", "message"), [
+    ({"effort": 0}, ValueError, "'effort' must be >= 1"),
+    ({"max_answers": 0}, ValueError, "'max_answers' must be >= 1"),
+    ({"unique_names": "yes"}, TypeError, "'unique_names' must be"),
+    ({"axioms": ["P(a)"]}, TypeError, r"ProofTask.axioms\[1\] must be a Clause, not str"),
+    ({"axioms": [Clause([(True, "P")])]}, ValueError,
+     r"axioms\[1\] .*: an atom must be a tuple \(predicate, \*args\), got 'P'"),
+    ({"axioms": [Clause([(1, ("P", "a"))])]}, ValueError, "a literal must be a pair"),
+    ({"axioms": [Clause([(True, ("P", 1.5))])]}, ValueError, r"1.5 in \('P', 1.5\) is not a term"),
+    ({"axioms": [Clause([(True, ("P", -1))])]}, ValueError, "-1 in"),
+    ({"axioms": [Clause([(True, ("P", ()))])]}, ValueError, r"\(\) in"),
+])
+def test_malformed_tasks_are_refused(options, error, message):
+    with pytest.raises(error, match=message):
+        ProofTask(**{"axioms": [], "negated_goal": GOAL, **options})
+
+
+def test_well_formed_terms_are_accepted():
+    axioms = [Clause([(True, ("P", "a", 0, Param("n"), ("f", "b", 1)))])]
+    assert ProofTask(axioms, GOAL).effort == 1000
