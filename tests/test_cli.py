@@ -53,12 +53,14 @@ def test_missing_problem_file(tmp_path, capsys):
     assert "no such problem file" in capsys.readouterr().err
 
 
-def test_unknown_plugin_name_in_config(tmp_path, capsys):
+def test_unknown_plugin_name_in_config(tmp_path, capsys, monkeypatch):
+    # As if strips-z3-prover were not installed: no plugin distribution is loaded.
+    monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
     config = tmp_path / "strips.toml"
     config.write_text('[prover]\nname = "z3"\n')
     assert main(["solve", str(THREE_BOXES), "--config", str(config)]) == 2
     err = capsys.readouterr().err
-    assert "prover 'z3' is not registered (available: resolution); is strips-z3-prover installed?" in err
+    assert "prover 'z3' is not registered (available: none); is strips-z3-prover installed?" in err
 
 
 def test_plugins_lists_implementations_with_distributions_and_options(capsys):
