@@ -141,15 +141,9 @@ def test_bad_options_are_config_errors() -> None:
         Planner.create(config)
 
 
-@pytest.mark.parametrize(
-    "problem",
-    [
-        "three-boxes.strips",
-        "robot-world/light.strips",
-        "robot-world/boxes.strips",
-        "robot-world/other-room.strips",
-    ],
-)
+# The other robot-world tasks are solved by benchmarks/bench_paper_tasks.py, which runs
+# every installed prover; five-goals takes Z3 over a minute (see the README).
+@pytest.mark.parametrize("problem", ["three-boxes.strips", "robot-world/light.strips"])
 def test_means_ends_with_z3_solves_the_papers_tasks(problem: str) -> None:
     planner = Planner.create(Config.from_file(EXAMPLES / "configs" / "z3.toml"))
     task = planner.load(EXAMPLES / problem)

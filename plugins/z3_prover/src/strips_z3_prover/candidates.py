@@ -22,7 +22,7 @@ import z3
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import EQUALITY, Param, Term
-from strips_z3_prover.encoding import Vocabulary, is_named
+from strips_z3_prover.encoding import Vocabulary
 
 Element = int  # a model element, by the id of its Z3 value
 Table = frozenset[tuple[Element, ...]]  # the tuples where a predicate is true
@@ -31,7 +31,15 @@ Table = frozenset[tuple[Element, ...]]  # the tuples where a predicate is true
 class ModelTruth:
     """Truth of ground atoms in one model, over the values of the universe's constants."""
 
-    def __init__(self, model: z3.ModelRef, vocabulary: Vocabulary, universe: Sequence[str]):
+    def __init__(
+        self,
+        model: z3.ModelRef,
+        vocabulary: Vocabulary,
+        universe: Sequence[str],
+        answers: Sequence[str],
+    ) -> None:
+        """``universe`` holds the constants the variables range over, ``answers`` the
+        named ones parameters may be bound to."""
         self.model = model
         self.vocabulary = vocabulary
         # Elements are compared by AST id, which Z3 reuses once an AST is freed: the
@@ -43,8 +51,8 @@ class ModelTruth:
         self._representative: dict[Element, z3.ExprRef] = {}
         for name in universe:
             self._representative.setdefault(self.value[name], vocabulary.constant(name))
-            if is_named(name):
-                self.names.setdefault(self.value[name], []).append(name)
+        for name in answers:
+            self.names.setdefault(self.value[name], []).append(name)
         self._tables: dict[tuple[str, int], Table] = {}
         self._interpreted = {declaration.name() for declaration in model.decls()}
 

@@ -25,7 +25,7 @@ from strips_framework.logic.unify import unify
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.candidates import ModelTruth, surviving
-from strips_z3_prover.encoding import is_named
+from strips_z3_prover.encoding import is_named, task_terms
 from strips_z3_prover.outcome import Outcome, status_of
 from strips_z3_prover.session import PLACEHOLDER, GroundSession
 
@@ -45,8 +45,11 @@ class _Attempt:
     ) -> None:
         self.session, self.task, self.params, self.budget = session, task, params, budget
         self.assumptions = [session.selector(clause) for clause in task.axioms]
-        if task.unique_names:
-            self.assumptions.append(session.unique_names)
+        constants = {t for t in task_terms((*task.axioms, *task.negated_goal)) if type(t) is str}
+        # Answers are the task's own constants, never one the session kept from another.
+        self.named = sorted(c for c in constants if is_named(c))
+        if task.unique_names and len(self.named) > 1:
+            self.assumptions.append(session.distinct(self.named))
         self.first: ModelTruth | None = None
 
     def run(self) -> Outcome:
@@ -78,7 +81,7 @@ class _Attempt:
                 break
         if answers:
             return Outcome(PROVED, tuple(answers))
-        if not any(is_named(c) for c in self.session.universe) and self._holds_for_all():
+        if not self.named and self._holds_for_all():
             return Outcome(PROVED, ((),))
         return Outcome(SATURATED, lemmas=self._lemmas())
 
@@ -139,7 +142,7 @@ class _Attempt:
         return tuple(lemmas)
 
     def _truth(self, model: z3.ModelRef) -> ModelTruth:
-        return ModelTruth(model, self.session.vocabulary, self.session.universe)
+        return ModelTruth(model, self.session.vocabulary, self.session.universe, self.named)
 
     def _refute(
         self, clauses: Sequence[Clause], binding: dict[Param, str]

@@ -81,16 +81,19 @@ def _check(
     budget: Budget,
 ) -> z3.CheckSatResult:
     """Check the axioms with ``goal`` under ``binding``; parameters bound to Z3 constants
-    are universally quantified in each clause, like its variables."""
-    solver.push()
+    are universally quantified in each clause, like its variables.
+
+    The goal is switched on by a fresh assumption rather than pushed: Z3 preprocesses
+    quantified assertions at a push, outside the resource limit, which a problem with
+    54-variable clauses (TPTP's PUZ037-1) turned into a hang."""
+    switch = z3.Bool(f"goal!{len(solver.assertions())}", vocabulary.context)
     for clause in goal:
         encoded = vocabulary.quantified_clause(clause, binding)
         bound = [
             binding[p] for p in sorted(clause_params(clause)) if isinstance(binding[p], z3.ExprRef)
         ]
-        solver.add(z3.ForAll(bound, encoded) if bound else encoded)
-    result = budget.check(solver)
-    solver.pop()
+        solver.add(z3.Implies(switch, z3.ForAll(bound, encoded) if bound else encoded))
+    result = budget.check(solver, [switch])
     return result
 
 

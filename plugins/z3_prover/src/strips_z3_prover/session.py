@@ -12,7 +12,9 @@ admitted before clauses, and admitting one instantiates every clause already ass
 it, so each clause always has all its instances over the universe. For clauses without
 function symbols this is exactly Herbrand's theorem: the clauses are unsatisfiable iff
 their instances over the constants are (with Z3's equality for ``=``). Unique names are
-a ``Distinct`` over the non-Skolem constants behind their own selector.
+a ``Distinct`` over the task's own non-Skolem constants, behind a selector per set of
+constants: constants the session kept from other tasks stay unconstrained, so they can
+always be read as one of the task's objects and change no task's answer.
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ import z3
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
-from strips_z3_prover.encoding import Vocabulary, clause_variables, is_named
+from strips_z3_prover.encoding import Vocabulary, clause_variables
 from strips_z3_prover.smtlib import Batch
 
 #: Grounding needs a non-empty universe; Skolem-prefixed, so never a witness.
@@ -46,7 +48,7 @@ class GroundSession:
         self._known: set[str] = set()
         self._selectors: dict[Clause, z3.BoolRef] = {}
         self._open: list[tuple[Clause, list[int], str]] = []
-        self.unique_names = z3.Bool("unique!names", self.vocabulary.context)
+        self._distinct: dict[tuple[str, ...], z3.BoolRef] = {}
         self._declared: set[str] = set()
         self.solver.from_string("(declare-sort U 0)")
 
@@ -73,9 +75,17 @@ class GroundSession:
             for values in _tuples_using_new(self.universe, old, len(variables)):
                 batch.assert_clause(clause, dict(zip(variables, values)), selector)
         self.add(batch)
-        named = [self.vocabulary.constant(c) for c in self.universe if is_named(c)]
-        if len(named) > 1:
-            self.solver.add(z3.Implies(self.unique_names, z3.Distinct(named)))
+
+    def distinct(self, names: Sequence[str]) -> z3.BoolRef:
+        """The selector of "``names`` are pairwise distinct" (unique names)."""
+        key = tuple(sorted(names))
+        found = self._distinct.get(key)
+        if found is None:
+            found = z3.Bool(f"distinct!{len(self._distinct)}", self.vocabulary.context)
+            constants = [self.vocabulary.constant(name) for name in key]
+            self.solver.add(z3.Implies(found, z3.Distinct(constants)))
+            self._distinct[key] = found
+        return found
 
     def selector(self, clause: Clause) -> z3.BoolRef:
         """The selector of ``clause``, asserting its instances the first time."""

@@ -1,0 +1,158 @@
+"""Resolution against Z3: the paper's proof tasks, and entailment queries of growing size.
+
+    .venv/bin/python -m pytest benchmarks/bench_provers.py --benchmark-only \\
+        --benchmark-group-by=param:family --benchmark-sort=name \\
+        --benchmark-columns=min,mean,rounds
+
+- ``paper``: every proof task a means-ends run asks on a paper task (recorded once from a
+  resolution run, so both provers answer the same questions), replayed in order; Z3 with
+  its incremental session and with a fresh solver per task.
+- ``facts``: a robot world with ``size`` rooms, each with a door to the corridor and two
+  boxes, and the question "which door ``k`` from which room ``l`` leads into room 1"
+  (the ``gothrudoor`` precondition): more facts, same axioms.
+- ``axioms``: ``size`` case splits, ``A_i(x) | B_i(x)``, ``A_i(x) -> C_i(x)``,
+  ``B_i(x) -> C_i(x)``, and the goal ``C_1(c) & ... & C_size(c)``: more axioms, and a
+  refutation that resolution can only find by combining every case (2^size clauses),
+  while a SAT search splits once per axiom.
+
+Every case checks that both provers decide it the same way. In the normal test run each
+case runs once, as a smoke test.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from attrs import evolve
+from strips_z3_prover import Z3Prover
+
+from strips_framework.config import Config
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Param
+from strips_framework.planner import Planner
+from strips_framework.proving import GAVE_UP, ProofResult, ProofTask, TheoremProver
+from strips_framework.search.goal_prover import GoalProver
+from strips_resolution_prover import ResolutionProver
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+PAPER_TASKS = ["three-boxes", "robot-world/light", "robot-world/boxes"]
+EFFORT = 20000
+PROVERS = {
+    "resolution": ResolutionProver,
+    "z3": Z3Prover,
+    "z3-fresh": lambda: Z3Prover(incremental=False),
+}
+
+
+class _Recorder:
+    """A prover that keeps the tasks it is asked, answering with the resolution prover."""
+
+    name = "recorder"
+
+    def __init__(self) -> None:
+        self.tasks: list[ProofTask] = []
+        self.inner = ResolutionProver()
+
+    def prove(self, task: ProofTask) -> ProofResult:
+        self.tasks.append(task)
+        return self.inner.prove(task)
+
+
+def recorded_tasks(name: str) -> list[ProofTask]:
+    """The proof tasks of a means-ends run on ``name``, in the order they were asked."""
+    planner = Planner.create(Config.from_dict({"limits": {"time": 60}}))
+    problem = planner.load(EXAMPLES / f"{name}.strips")
+    recorder = _Recorder()
+    original = GoalProver.__attrs_post_init__
+
+    def record(self: GoalProver) -> None:
+        original(self)
+        self.prover = recorder
+
+    GoalProver.__attrs_post_init__ = record
+    try:
+        assert planner.solve(problem).solved
+    finally:
+        GoalProver.__attrs_post_init__ = original
+    # The search's own effort bound fits resolution; both provers get the same, larger one.
+    return [evolve(task, effort=EFFORT) for task in recorder.tasks]
+
+
+def _unit(predicate: str, *args: object) -> Clause:
+    return Clause([(True, (predicate, *args))])
+
+
+def rooms_query(size: int) -> ProofTask:
+    """The ``facts`` family (see the module docstring)."""
+    corridor = "CORRIDOR"
+    axioms = [
+        Clause([(False, ("CONNECTS", 0, 1, 2)), (True, ("CONNECTS", 0, 2, 1))]),
+        Clause([(False, ("CONNECTS", 0, 1, 2)), (True, ("INROOM", 0, 1))]),
+        _unit("INROOM", "ROBOT", corridor),
+    ]
+    for room in range(1, size + 1):
+        axioms.append(_unit("CONNECTS", f"DOOR{room}", f"ROOM{room}", corridor))
+        axioms.append(_unit("TYPE", f"DOOR{room}", "DOOR"))
+        for box in (1, 2):
+            axioms.append(_unit("INROOM", f"BOX{room}_{box}", f"ROOM{room}"))
+            axioms.append(_unit("TYPE", f"BOX{room}_{box}", "BOX"))
+    axioms.append(_unit("NEXTTO", "ROBOT", "DOOR1"))
+    k, l = Param("k"), Param("l")
+    goal = Clause(
+        [
+            (False, ("NEXTTO", "ROBOT", k)),
+            (False, ("CONNECTS", k, l, "ROOM1")),
+            (False, ("INROOM", "ROBOT", l)),
+            (False, ("TYPE", k, "DOOR")),
+        ]
+    )
+    return ProofTask(axioms, [goal], effort=EFFORT, unique_names=True)
+
+
+def case_split_query(size: int) -> ProofTask:
+    """The ``axioms`` family (see the module docstring)."""
+    axioms = []
+    for i in range(1, size + 1):
+        axioms.append(Clause([(True, (f"A{i}", 0)), (True, (f"B{i}", 0))]))
+        axioms.append(Clause([(False, (f"A{i}", 0)), (True, (f"C{i}", 0))]))
+        axioms.append(Clause([(False, (f"B{i}", 0)), (True, (f"C{i}", 0))]))
+    goal = Clause([(False, (f"C{i}", "c")) for i in range(1, size + 1)])
+    return ProofTask(axioms, [goal], effort=EFFORT, unique_names=True)
+
+
+def _solve_all(prover: TheoremProver, tasks: list[ProofTask]) -> list[str]:
+    return [prover.prove(task).status for task in tasks]
+
+
+@pytest.mark.parametrize("prover", sorted(PROVERS))
+@pytest.mark.parametrize("task", PAPER_TASKS)
+def test_paper(benchmark, task: str, prover: str) -> None:
+    benchmark.group = "paper"
+    tasks = recorded_tasks(task)
+    statuses = benchmark.pedantic(
+        lambda: _solve_all(PROVERS[prover](), tasks), rounds=1, iterations=1
+    )
+    assert statuses == _solve_all(ResolutionProver(), tasks)
+    benchmark.extra_info.update(family="paper", tasks=len(tasks))
+
+
+@pytest.mark.parametrize("prover", ["resolution", "z3"])
+@pytest.mark.parametrize("size", [2, 4, 8])
+def test_facts(benchmark, size: int, prover: str) -> None:
+    _query(benchmark, "facts", rooms_query(size), prover)
+
+
+@pytest.mark.parametrize("prover", ["resolution", "z3"])
+@pytest.mark.parametrize("size", [2, 4, 6, 8, 10])
+def test_axioms(benchmark, size: int, prover: str) -> None:
+    _query(benchmark, "axioms", case_split_query(size), prover)
+
+
+def _query(benchmark, family: str, task: ProofTask, prover: str) -> None:
+    benchmark.group = family
+    result = benchmark.pedantic(lambda: PROVERS[prover]().prove(task), rounds=1, iterations=1)
+    benchmark.extra_info.update(family=family, status=result.status, effort=result.effort_used)
+    other = PROVERS["z3" if prover == "resolution" else "resolution"]().prove(task)
+    if other.status != GAVE_UP and result.status != GAVE_UP:
+        assert result.proved == other.proved
