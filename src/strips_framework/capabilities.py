@@ -43,6 +43,7 @@ COMPLETE = "complete"
 EFFORT_BOUND = "effort-bound"
 # Evaluators and state heuristics
 ADMISSIBLE = "admissible"
+PREFERRED_OPERATORS = "preferred-operators"
 # Strategies
 OPTIMAL = "optimal"
 
@@ -71,10 +72,12 @@ VOCABULARY: dict[str, dict[str, str]] = {
     },
     "heuristic": {
         ADMISSIBLE: "the estimate never exceeds the cost of an optimal plan from the state",
+        PREFERRED_OPERATORS: "estimate_with_preferred names operators applicable in the "
+        "state that lead towards the goal (heuristics without it name none)",
     },
     "strategy": {
-        OPTIMAL: "the plan found is a shortest one when the strategy's soft requirements "
-        "(e.g. an admissible evaluator) hold",
+        OPTIMAL: "the plan found is a cheapest one when the strategy's soft requirements "
+        "(e.g. an admissible evaluator or heuristic) hold",
     },
     "difference": {},
     "relevance": {},
@@ -95,6 +98,12 @@ class Requirement:
     capability: str
     reason: str
     strict: bool = True
+
+
+#: What an optimal ground-task strategy (``astar``) needs of its state heuristic.
+ADMISSIBLE_HEURISTIC = Requirement(
+    "heuristic", ADMISSIBLE, "its first plan is a cheapest one only then", strict=False
+)
 
 
 def declared(cls: type, kind: str) -> frozenset[str] | None:

@@ -11,7 +11,6 @@ states of a :class:`GroundTask` with a state heuristic and take PDDL input, grou
 from __future__ import annotations
 
 import time
-import warnings
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -148,12 +147,6 @@ class Planner:
                 "not ground tasks"
             )
         heuristic = build(self.registry, "heuristic")
-        if getattr(strategy, "optimal", False) and not heuristic.admissible:
-            warnings.warn(
-                f"heuristic {heuristic.name!r} is not admissible: the plan "
-                f"{strategy.name} finds with it may not be optimal",
-                stacklevel=2,
-            )
         started = time.perf_counter() if started is None else started
         return strategy.search_task(task, heuristic.for_task(task), self.config.limits, started)
 

@@ -44,6 +44,7 @@ class ForwardStrategy:
     :class:`GroundTask` and the heuristic's estimator instead of a first-order problem."""
 
     works_on: ClassVar[str] = "ground-task"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
     #: True when running out of states proves the task unsolvable.
     complete: ClassVar[bool] = True
 

@@ -16,6 +16,7 @@ from typing import ClassVar
 
 from attrs import field, frozen, validators
 
+from strips_framework.capabilities import ADMISSIBLE_HEURISTIC, OPTIMAL, Requirement
 from strips_framework.search.forward.base import ForwardStrategy, SearchRun
 from strips_framework.search.forward.openlists import open_list
 from strips_framework.search.forward.space import NO_PARENT
@@ -97,8 +98,8 @@ class AStarSearch(EagerSearch):
 
     name: ClassVar[str] = "astar"
     reopen: ClassVar[bool] = True
-    #: The planner warns when an optimal strategy gets an inadmissible heuristic.
-    optimal: ClassVar[bool] = True
+    capabilities: ClassVar[frozenset[str]] = frozenset({OPTIMAL})
+    requires: ClassVar[tuple[Requirement, ...]] = (ADMISSIBLE_HEURISTIC,)
 
     def key(self, g: float, h: float) -> object:
         return (g + h, h)

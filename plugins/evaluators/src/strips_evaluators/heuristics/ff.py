@@ -16,6 +16,7 @@ from attrs import frozen
 from strips_evaluators.heuristics.additive import additive_exploration
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
+from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
 
 
@@ -81,6 +82,7 @@ class FFHeuristic:
     (the hadd exploration, then a walk over the relaxed plan)."""
 
     name: ClassVar[str] = "ff"
+    capabilities: ClassVar[frozenset[str]] = frozenset({PREFERRED_OPERATORS})
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> FFEstimator:

@@ -23,6 +23,7 @@ from attrs import frozen
 
 from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
 from strips_evaluators.heuristics.relaxation import facts_in, relax
+from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
 
 
@@ -98,6 +99,7 @@ class LandmarkCountHeuristic:
     after a one-off label propagation."""
 
     name: ClassVar[str] = "lmcount"
+    capabilities: ClassVar[frozenset[str]] = frozenset({PREFERRED_OPERATORS})
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> LandmarkCountEstimator:
