@@ -1,9 +1,11 @@
-"""The conformance kit run against every registered prover, evaluator and strategy: the
+"""The conformance kit run against every registered prover, evaluator, state heuristic and
+strategy (world-model and ground-task ones): the
 builtins, the plugins of this repository and whatever else is installed (z3, say)."""
 
 from strips_framework.plugins import Registry
 from strips_framework.testing import (
     EvaluatorConformance,
+    HeuristicConformance,
     ProverConformance,
     StrategyConformance,
 )
@@ -11,13 +13,12 @@ from strips_framework.testing import (
 SUITES = {
     "prover": (ProverConformance, "prover_class"),
     "evaluator": (EvaluatorConformance, "evaluator_class"),
+    "heuristic": (HeuristicConformance, "heuristic_class"),
     "strategy": (StrategyConformance, "strategy_class"),
 }
 
 for kind, (suite, attribute) in SUITES.items():
     for registration in Registry.from_plugins().registrations(kind):
-        if getattr(registration.cls, "works_on", None) == "ground-task":
-            continue
         title = "".join(part.capitalize() for part in registration.name.replace("_", "-").split("-"))
         name = f"Test{kind.capitalize()}{title}"
         globals()[name] = type(name, (suite,), {attribute: registration.cls})

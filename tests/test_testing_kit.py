@@ -1,28 +1,47 @@
 """The conformance kit catches broken plugins, and its own oracle is right."""
 
+import itertools
+import math
 import textwrap
+from collections.abc import Callable
 from pathlib import Path
 from typing import ClassVar
 
 import pytest
 from attrs import field, frozen, validators
 
-from strips_framework.capabilities import ADMISSIBLE, ANSWERS, EFFORT_BOUND, SOUND
+from strips_framework.capabilities import (
+    ADMISSIBLE,
+    ANSWERS,
+    EFFORT_BOUND,
+    PREFERRED_OPERATORS,
+    SOUND,
+)
 from strips_framework.formats.native import NativeLoader
+from strips_framework.grounding.task import GroundTask
 from strips_framework.logic.terms import Param
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
+from strips_framework.search.forward.result import SOLVED, ForwardResult, ForwardStatistics
 from strips_framework.search.node import Node
 from strips_framework.testing import (
     CASES,
+    TASKS,
+    UNSOLVABLE,
     ConformanceFailure,
     check_admissible,
     check_case,
     check_declaration,
     check_effort_bound,
+    check_expansion_limit,
+    check_heuristic,
     check_options_refuse_wrong_values,
+    check_solves_task,
+    check_unsolvable,
     planner_for,
     recorded_search,
 )
+from strips_framework.testing.ground_search_checks import ground_planner
+from strips_framework.testing.ground_tasks import task_space
 from strips_framework.testing.search_checks import state_space
 
 pytest_plugins = ["pytester"]
@@ -194,3 +213,140 @@ def test_the_suites_build_the_class_with_the_options_given(pytester):
     result = pytester.runpytest_inprocess("-q", "-p", "no:cacheprovider", "-k", "declaration or three-boxes")
     result.assert_outcomes(passed=3, failed=3)
     result.stdout.fnmatch_lines(["*TestWeightless::test_declaration*"])
+
+
+@frozen
+class _Estimator:
+    """Estimates by a function of the task and the state; prefers what ``prefer`` says."""
+
+    task: GroundTask
+    value: Callable[[GroundTask, int], float]
+    prefer: Callable[[GroundTask, int], list[int]] = lambda task, state: []
+
+    def estimate(self, state: int) -> float:
+        return self.value(self.task, state)
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
+        return self.value(self.task, state), self.prefer(self.task, state)
+
+
+def _heuristic(name: str, value, claims=frozenset(), prefer=lambda task, state: []) -> type:
+    """A state heuristic class named ``name`` declaring ``claims``."""
+
+    @frozen
+    class _Heuristic:
+        capabilities: ClassVar[frozenset[str]] = frozenset(claims)
+
+        def for_task(self, task: GroundTask) -> _Estimator:
+            return _Estimator(task, value, prefer)
+
+    _Heuristic.name = name
+    return _Heuristic
+
+
+def _goals_left(task: GroundTask, state: int) -> float:
+    return sum(1 for fact in task.goal if not state >> fact & 1)
+
+
+def test_a_heuristic_claiming_admissible_but_overestimating_is_caught():
+    doubled = _heuristic("doubled", lambda task, s: 2.0 * _goals_left(task, s), {ADMISSIBLE})
+    with pytest.raises(ConformanceFailure, match="'admissible' but estimates 6.0 where .* costs 5"):
+        check_heuristic(doubled(), "blocks-4", doubled.capabilities)
+    check_heuristic(doubled(), "blocks-4", frozenset())  # fine when not claimed
+
+
+def test_a_heuristic_calling_a_solvable_state_a_dead_end_is_caught():
+    hopeless = _heuristic("hopeless", lambda task, state: 0 if task.is_goal(state) else math.inf)
+    with pytest.raises(ConformanceFailure, match=r"math.inf \(a dead end\), but a plan of cost 3"):
+        check_heuristic(hopeless(), "fuel-4", frozenset())
+    check_heuristic(hopeless(), UNSOLVABLE, frozenset())  # there every state is a dead end
+
+
+def test_a_heuristic_preferring_an_inapplicable_operator_is_caught():
+    def inapplicable(task: GroundTask, state: int) -> list[int]:
+        return [next(i for i, op in enumerate(task.operators) if not op.applicable(state))]
+
+    pushy = _heuristic("pushy", _goals_left, {PREFERRED_OPERATORS}, inapplicable)
+    with pytest.raises(ConformanceFailure, match="prefers .* which is not applicable there"):
+        check_heuristic(pushy(), "gripper-3", pushy.capabilities)
+
+
+def test_preferred_operators_must_match_the_declaration():
+    def applicable(task: GroundTask, state: int) -> list[int]:
+        return [i for i, op in enumerate(task.operators) if op.applicable(state)][:1]
+
+    quiet = _heuristic("quiet", _goals_left, {PREFERRED_OPERATORS})
+    with pytest.raises(ConformanceFailure, match="declares 'preferred-operators' but prefers no"):
+        check_heuristic(quiet(), "circuit-1", quiet.capabilities)
+    secretive = _heuristic("secretive", _goals_left, prefer=applicable)
+    with pytest.raises(ConformanceFailure, match="but does not declare 'preferred-operators'"):
+        check_heuristic(secretive(), "circuit-1", secretive.capabilities)
+
+
+def test_a_heuristic_with_a_memory_is_caught():
+    calls = itertools.count()
+    moody = _heuristic("moody", lambda task, s: _goals_left(task, s) * (next(calls) % 2 + 1))
+    with pytest.raises(ConformanceFailure, match="a heuristic must give a state the same value"):
+        check_heuristic(moody(), "delivery-2", frozenset())
+
+
+@frozen
+class _Hasty:
+    """Returns the first operator as the whole plan."""
+
+    name: ClassVar[str] = "hasty"
+    works_on: ClassVar[str] = "ground-task"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+
+    def search_task(self, task, estimator, limits, started=None) -> ForwardResult:
+        return ForwardResult(SOLVED, (task.operators[0].name,), 1, ForwardStatistics())
+
+
+def test_a_ground_strategy_returning_an_invalid_plan_is_caught():
+    planner = ground_planner("strategy", _Hasty, {"heuristic": "blind"})
+    with pytest.raises(ConformanceFailure, match="is not valid"):
+        check_solves_task(planner, "blocks-4")
+    with pytest.raises(ConformanceFailure, match="the task has no plan"):
+        check_unsolvable(planner)
+    limited = ground_planner("strategy", _Hasty, {"heuristic": "blind"}, limits={"expansions": 1})
+    unlimited = ForwardResult(SOLVED, None, None, ForwardStatistics(expanded=5))
+    with pytest.raises(ConformanceFailure, match="expected 'expansion-limit'"):
+        check_expansion_limit(limited, "blocks-4", unlimited)
+
+
+def test_the_kits_task_optima_are_the_known_ones():
+    assert [task_space(name).optimum for name in (*TASKS, UNSOLVABLE)] == [6, 9, 14, 3, 5, math.inf]
+
+
+def test_one_line_runs_the_heuristic_kit_and_reports_failures(pytester):
+    pytester.makepyfile(test_broken_heuristic=textwrap.dedent("""
+        import math
+        from typing import ClassVar
+        from attrs import frozen
+        from strips_framework.testing import HeuristicConformance
+
+        @frozen
+        class Estimator:
+            task: object
+
+            def estimate(self, state):
+                return 0.0 if self.task.is_goal(state) else 100.0
+
+            def estimate_with_preferred(self, state):
+                return self.estimate(state), ()
+
+        @frozen
+        class Boastful:
+            name: ClassVar[str] = "boastful"
+            capabilities: ClassVar[frozenset[str]] = frozenset({"admissible"})
+
+            def for_task(self, task):
+                return Estimator(task)
+
+        class TestBoastful(HeuristicConformance):
+            heuristic_class = Boastful
+    """))
+    result = pytester.runpytest_inprocess("-q", "-p", "no:cacheprovider")
+    outcomes = result.parseoutcomes()
+    assert outcomes["failed"] == 5 and outcomes["passed"] >= 10  # the unsolvable task passes
+    result.stdout.fnmatch_lines(["*declares 'admissible' but estimates 100.0*"])

@@ -55,13 +55,19 @@ def state_space(name: str) -> StateSpace:
 
 
 def planner_for(
-    kind: str, cls: type, choices: Mapping[str, str], options: Mapping[str, Any] = MappingProxyType({})
+    kind: str,
+    cls: type,
+    choices: Mapping[str, str],
+    options: Mapping[str, Any] = MappingProxyType({}),
+    limits: Mapping[str, float] = MappingProxyType(LIMITS),
 ) -> Planner:
-    """A planner using ``cls`` with ``options`` for ``kind`` and ``choices`` (over the
-    defaults) for the rest; ``cls`` is registered for the run unless an installed plugin
-    already is it."""
+    """A planner using ``cls`` with ``options`` for ``kind``, ``choices`` (over the
+    defaults) for the rest and ``limits``; ``cls`` is registered for the run unless an
+    installed plugin already is it."""
     tables: dict[str, Any] = {**DEFAULT_CHOICES, **choices, kind: {**options, "name": cls.name}}
-    config = Config.from_dict({**tables, "limits": LIMITS}, f"<conformance kit: {kind} {cls.name!r}>")
+    config = Config.from_dict(
+        {**tables, "limits": dict(limits)}, f"<conformance kit: {kind} {cls.name!r}>"
+    )
     installed = Registry.from_plugins()
     if cls.name in installed.names(kind) and installed.get(kind, cls.name).cls is cls:
         return Planner.create(config)

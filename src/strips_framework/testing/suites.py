@@ -26,15 +26,28 @@ from strips_framework.capabilities import (
     declared,
 )
 from strips_framework.config import DEFAULT_CHOICES
-from strips_framework.planner import Planner
+from strips_framework.planner import GROUND_TASK, Planner
 from strips_framework.plugins import KINDS, Registry
 from strips_framework.proving import TheoremProver
-from strips_framework.search.model_astar import ModelAStarSearch
+from strips_framework.search.forward.eager import AStarSearch
+from strips_framework.search.forward.lazy import LazyGreedySearch
 from strips_framework.search.means_ends import MeansEndsSearch
+from strips_framework.search.model_astar import ModelAStarSearch
 from strips_framework.testing.declaration import (
+    ConformanceFailure,
     check_declaration,
     check_options_refuse_wrong_values,
 )
+from strips_framework.testing.ground_search_checks import (
+    TASK_LIMITS,
+    check_expansion_limit,
+    check_solves_task,
+    check_unsolvable,
+    ground_planner,
+    solve_task,
+)
+from strips_framework.testing.ground_tasks import TASKS, UNSOLVABLE
+from strips_framework.testing.heuristic_checks import check_heuristic
 from strips_framework.testing.prover_cases import CASES, ProverCase
 from strips_framework.testing.prover_checks import (
     check_case,
@@ -149,22 +162,35 @@ class EvaluatorConformance(_Conformance):
 
 
 class StrategyConformance(_Conformance):
-    """The kit for a search strategy: set ``strategy_class``. It solves the kit's problems
-    with the config's default partners (overridden by ``partners``); a strategy declaring
-    'optimal' must find shortest plans with every installed admissible evaluator."""
+    """The kit for a search strategy: set ``strategy_class``.
+
+    A world-model strategy solves the kit's problems with the config's default partners
+    (overridden by ``partners``); one declaring 'optimal' must find shortest plans with
+    every installed admissible evaluator. A ground-task strategy (``works_on =
+    "ground-task"``) solves the kit's PDDL tasks with every installed heuristic (or
+    ``partners["heuristic"]``): plans valid under the lifted validator, cheapest ones
+    when it declares 'optimal' and the heuristic 'admissible'; no plan on an unsolvable
+    task; and it stops at an expansion limit. A strategy with ``complete = False`` may
+    give up ('exhausted-incomplete') but must solve some task."""
 
     kind = "strategy"
     slot = "strategy_class"
     strategy_class: ClassVar[type]
     partners: ClassVar[Mapping[str, str]] = {}
 
+    def _searches(self, works_on: str) -> None:
+        if getattr(self.strategy_class, "works_on", "problem") != works_on:
+            pytest.skip(f"{self.strategy_class.name!r} does not search {works_on}s")
+
     @pytest.mark.parametrize("problem", PROBLEMS)
     def test_solves(self, problem: str) -> None:
+        self._searches("problem")
         planner = _planner("strategy", self.strategy_class, self.partners, self.options)
         check_solves(planner, problem)
 
     @pytest.mark.parametrize("problem", PROBLEMS)
     def test_optimal_with_admissible_evaluators(self, problem: str) -> None:
+        self._searches("problem")
         self._require(OPTIMAL)
         registry = Registry.from_plugins()
         admissible = [
@@ -178,3 +204,63 @@ class StrategyConformance(_Conformance):
             choices = {**DEFAULT_CHOICES, **self.partners, "evaluator": evaluator}
             planner = _planner("strategy", self.strategy_class, choices, self.options)
             check_solves(planner, problem)
+
+    def _ground_planners(self, limits: Mapping[str, float] = TASK_LIMITS) -> list[Planner]:
+        """A planner per heuristic the kit runs the strategy with."""
+        self._searches(GROUND_TASK)
+        heuristics = [self.partners["heuristic"]] if "heuristic" in self.partners else (
+            Registry.from_plugins().names("heuristic")
+        )
+        if not heuristics:
+            pytest.skip(f"no {KINDS['heuristic'][1]} is installed")
+        return [
+            ground_planner("strategy", self.strategy_class, {"heuristic": h}, self.options, limits)
+            for h in heuristics
+        ]
+
+    @pytest.mark.parametrize("task", TASKS)
+    def test_solves_task_with_each_heuristic(self, task: str) -> None:
+        for planner in self._ground_planners():
+            check_solves_task(planner, task)
+
+    def test_incomplete_still_solves_some_task(self) -> None:
+        if getattr(self.strategy_class, "complete", True):
+            pytest.skip(f"{self.strategy_class.name!r} is complete: it must solve every task")
+        planners = self._ground_planners()
+        if not any(solve_task(p, task).solved for p in planners for task in TASKS):
+            raise ConformanceFailure(
+                f"{self.strategy_class.name!r} gives up on every kit task with every heuristic"
+            )
+
+    def test_no_plan_for_an_unsolvable_task(self) -> None:
+        for planner in self._ground_planners():
+            check_unsolvable(planner)
+
+    def test_stops_at_an_expansion_limit(self) -> None:
+        unlimited = self._ground_planners()
+        limited = self._ground_planners({**TASK_LIMITS, "expansions": 1})
+        for full, planner in zip(unlimited, limited):
+            check_expansion_limit(planner, TASKS[0], solve_task(full, TASKS[0]))
+
+
+class HeuristicConformance(_Conformance):
+    """The kit for a state heuristic: set ``heuristic_class``. On every reachable state
+    of the kit's PDDL tasks: 0 on goal states, no negative values, ``math.inf`` only on
+    dead ends, applicable preferred operators (named only when 'preferred-operators' is
+    declared), the same value when asked again; with 'admissible', never above the cost
+    of a cheapest plan. Then lazy greedy search and A* solve the tasks with it."""
+
+    kind = "heuristic"
+    slot = "heuristic_class"
+    heuristic_class: ClassVar[type]
+
+    @pytest.mark.parametrize("task", (*TASKS, UNSOLVABLE))
+    def test_estimates_on_every_reachable_state(self, task: str) -> None:
+        check_heuristic(self.heuristic_class(**self.options), task, self.capabilities())
+
+    @pytest.mark.parametrize("task", TASKS)
+    @pytest.mark.parametrize("strategy", [LazyGreedySearch, AStarSearch], ids=lambda s: s.name)
+    def test_guides_search(self, strategy: type, task: str) -> None:
+        choices = {"strategy": strategy.name}
+        planner = ground_planner("heuristic", self.heuristic_class, choices, self.options)
+        check_solves_task(planner, task)
