@@ -28,7 +28,7 @@ REGISTRY = Registry.from_plugins()
 COMBINATIONS = list(itertools.product(
     REGISTRY.names("strategy"), REGISTRY.names("prover"), REGISTRY.names("evaluator")
 ))
-pytestmark = pytest.mark.filterwarnings("ignore:.*with 'admissible' \(its first plan")
+pytestmark = pytest.mark.filterwarnings(r"ignore:.*with 'admissible' \(its first plan")
 PAPER_COMBINATION = ("means-ends", "paper")
 
 #: Means-ends analysis solves every task in under 350 nodes; forward search over world
