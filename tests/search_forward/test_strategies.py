@@ -138,3 +138,38 @@ def test_astar_on_pddl_matches_breadth_first(registry, heuristic):
     optimal = search(registry, task, "astar", heuristic)
     assert optimal.solved and len(optimal.plan) == len(shortest.plan) == optimal.cost
     assert replay(task, optimal.plan) == optimal.cost
+
+
+def test_lazy_search_boosts_on_each_new_best_h_but_not_at_the_initial_state(
+    registry, tasks, monkeypatch
+):
+    """As Fast Downward: the initial state's h only sets the mark to beat."""
+    from strips_framework.search.forward import lazy
+    from strips_framework.search.forward.openlists import AlternationOpenList
+
+    boosts = []
+
+    class RecordingList(AlternationOpenList):
+        def reward_progress(self) -> None:
+            boosts.append(True)
+            super().reward_progress()
+
+    monkeypatch.setattr(lazy, "open_list", lambda preferred, boost: RecordingList(boost))
+    task = tasks["gripper-3"]
+    ff = registry.get("heuristic", "ff").cls().for_task(task)
+    values = []
+
+    class Recording:
+        def estimate(self, state: int) -> float:
+            return ff.estimate(state)
+
+        def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
+            h, preferred = ff.estimate_with_preferred(state)
+            values.append(h)
+            return h, preferred
+
+    result = lazy.LazyGreedySearch().search_task(task, Recording(), Limits())
+    assert result.solved
+    expanded = values[:-1]  # the last one evaluated is the goal
+    new_lows = sum(h < min(expanded[:i]) for i, h in enumerate(expanded) if i)
+    assert new_lows > 0 and len(boosts) == new_lows

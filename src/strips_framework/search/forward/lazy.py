@@ -6,7 +6,8 @@ expanded state's own estimate, so a state with many successors costs one heurist
 instead of one per successor. A popped pair whose state was already reached is dropped
 (no reopening). Preferred operators of the expanded state also put their pairs into a
 second list; the two lists alternate and the preferred one gets ``boost`` extra turns
-each time h reaches a new low (Fast Downward's defaults: alternation, boost 1000).
+each time an expanded state's h is lower than any before it (not at the initial state;
+Fast Downward's defaults: alternation, boost 1000).
 """
 
 from __future__ import annotations
@@ -59,8 +60,11 @@ class LazyGreedySearch(ForwardStrategy):
                 budget.check(run.expanded)
                 run.expanded += 1
                 if h < best_h:
+                    # The initial state's h only sets the mark, as in Fast Downward:
+                    # boosting there would give the preferred list 1000 turns up front.
+                    if best_h != math.inf:
+                        frontier.reward_progress()
                     best_h = h
-                    frontier.reward_progress()
                 preferred = frozenset(preferred)
                 successors = applicable(state)
                 run.generated += len(successors)
