@@ -24,8 +24,6 @@ from typing import TYPE_CHECKING
 from attrs import frozen
 
 from strips_framework.errors import ConfigError, PluginError
-from strips_framework.logic.formulas import Atomic, atoms_of
-from strips_framework.logic.terms import EQUALITY as EQUALS_SIGN
 from strips_framework.plugins import KINDS
 
 if TYPE_CHECKING:
@@ -193,7 +191,11 @@ def check_problem(problem: Problem, registry: Registry, config: Config) -> None:
 
 
 def _problem_needs(problem: Problem) -> dict[str, str]:
-    """The prover capabilities a problem needs, each with where the need comes from."""
+    """The prover capabilities a problem needs, each with where the need comes from.
+    (The logic is imported here: a forward search on PDDL never calls this.)"""
+    from strips_framework.logic.formulas import Atomic, atoms_of
+    from strips_framework.logic.terms import EQUALITY as EQUALS_SIGN
+
     needs = {}
     if any(not isinstance(axiom, Atomic) for axiom in problem.axioms):
         needs[QUANTIFIED_AXIOMS] = "axioms that are not ground facts"
