@@ -5,7 +5,9 @@ estimate, then makes that state current and starts again, until a goal state is 
 With ``preferred = true`` (helpful actions) each breadth-first search follows only the
 preferred operators of the states it expands, which is what makes the method fast, and
 incomplete: when a breadth-first search runs out, the whole search gives up
-(``exhausted-incomplete``). States are never visited twice, across phases too.
+(``exhausted-incomplete``). A state for which the heuristic names no preferred operators
+(every state, for heuristics that have none) has all its applicable operators followed,
+as Fast Downward does without preferred-operator heuristics. States are never visited twice, across phases too.
 """
 
 from __future__ import annotations
@@ -53,7 +55,8 @@ class EnforcedHillClimbing(ForwardStrategy):
                 state = states[number]
                 budget.check(run.expanded)
                 run.expanded += 1
-                for op in sorted(set(preferred)) if self.preferred else applicable(state):
+                helpful = self.preferred and preferred
+                for op in sorted(set(preferred)) if helpful else applicable(state):
                     child = successor(state, op)
                     run.generated += 1
                     if child in ids:
