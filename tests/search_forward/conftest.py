@@ -82,6 +82,15 @@ def one_way_trap() -> GroundTask:
     return b.task("one-way-trap", ["have key", "alarm"], ["outside"])
 
 
+def greedy_trap() -> GroundTask:
+    """(consume s) reaches one goal at once but uses up what the other needs; the plan is
+    (keep s) first. Committing to the first better state, hill-climbing falls in."""
+    b = TaskBuilder()
+    b.op("(consume s)", ["s"], ["g1"], ["s"])
+    b.op("(keep s)", ["s"], ["g2"])
+    return b.task("greedy-trap", ["s"], ["g1", "g2"])
+
+
 def unsolvable() -> GroundTask:
     """The goal fact is never added."""
     b = TaskBuilder()
@@ -96,6 +105,7 @@ class Tasks:
 
     FACTORIES: ClassVar[dict[str, Callable[[], GroundTask]]] = {
         "toll-roads": toll_roads, "one-way-trap": one_way_trap, "unsolvable": unsolvable,
+        "greedy-trap": greedy_trap,
     }
 
     def __getitem__(self, name: str) -> GroundTask:

@@ -85,8 +85,11 @@ def test_expansion_limit_exits_12_and_json_names_the_limit(tmp_path, capsys):
 
 
 def test_hill_climbing_that_gives_up_exits_12(tmp_path):
-    ehc = config(tmp_path, '[strategy]\nname = "ehc"\n[heuristic]\nname = "goal-count"\n')
-    assert main(["solve", str(BLOCKS / "p4.pddl"), "--config", str(ehc)]) == 12
+    # On these four blocks, hFF's helpful actions lead hill-climbing where it cannot go on.
+    tasks = ROOT / "src" / "strips_framework" / "testing" / "tasks"
+    ehc = config(tmp_path, '[strategy]\nname = "ehc"\n[heuristic]\nname = "ff"\n')
+    files = [str(tasks / "blocks-domain.pddl"), str(tasks / "blocks-4.pddl")]
+    assert main(["solve", *files, "--config", str(ehc)]) == 12
 
 
 def test_wrong_plan_is_explained_at_its_failing_step(tmp_path, capsys):

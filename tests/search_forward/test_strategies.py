@@ -83,10 +83,14 @@ def test_complete_strategies_prove_unsolvability(registry, tasks, strategy):
 
 
 def test_hill_climbing_gives_up_as_incomplete(registry, tasks):
-    # goal-count has no preferred operators, so helpful-action pruning leaves nothing.
-    result = search(registry, tasks["gripper-2"], "ehc", "goal-count")
+    result = search(registry, tasks["greedy-trap"], "ehc", "goal-count")
     assert result.status == "exhausted-incomplete"
-    assert search(registry, tasks["gripper-2"], "ehc", "goal-count", preferred=False).solved
+    assert search(registry, tasks["greedy-trap"], "gbfs", "goal-count").solved
+
+
+def test_hill_climbing_follows_every_operator_without_preferred_ones(registry, tasks):
+    # goal-count names no preferred operators: helpful-action pruning must not leave nothing.
+    assert search(registry, tasks["gripper-2"], "ehc", "goal-count").solved
 
 
 def test_dead_end_initial_state(registry, tasks):
