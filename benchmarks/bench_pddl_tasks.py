@@ -24,6 +24,8 @@ from strips_framework.plugins import Registry
 
 TASKS = ["blocks/task01", "gripper/task01"]
 REGISTRY = Registry.from_plugins()
+#: A* with an inadmissible heuristic is a combination worth timing, not a mistake.
+pytestmark = pytest.mark.filterwarnings(r"ignore:.*with 'admissible' \(its first plan")
 
 
 def _heuristics(strategy: str) -> list[str | None]:

@@ -1,8 +1,8 @@
 """Problem sets of a matrix: globs over native and PDDL problem files.
 
 A PDDL problem is passed to ``strips solve`` alone (the planner finds its domain); the
-bench finds the domain too, by the same rules as Fast Downward's driver, because plan
-validation and the anchor planners need it named. Domain files matched by a glob are
+bench finds the domain too, by the planner's own rules (:func:`strips_framework.pddl.find_domain`),
+because plan validation and the anchor planners need it named. Domain files matched by a glob are
 not problems and are left out.
 """
 
@@ -14,7 +14,8 @@ from pathlib import Path
 
 from attrs import frozen
 
-from strips_framework.errors import ConfigError
+from strips_framework.errors import ConfigError, InputError
+from strips_framework.pddl import find_domain as find_pddl_domain
 
 PDDL = ".pddl"
 
@@ -35,21 +36,11 @@ def is_domain_file(path: Path) -> bool:
 
 
 def find_domain(problem: Path) -> Path | None:
-    """The domain of a PDDL problem: Fast Downward's naming rules, plus ``domainNN.pddl``
-    for ``taskNN.pddl`` (per-task domains, as in the IPC's openstacks)."""
-    stem, name = problem.stem, problem.name
-    candidates = [
-        name.replace("task", "domain") if "task" in name else None,
-        "domain.pddl",
-        f"{stem}-domain{PDDL}",
-        f"{name[:3]}-domain{PDDL}",
-        f"domain_{name}",
-        f"domain-{name}",
-    ]
-    for candidate in candidates:
-        if candidate and (problem.parent / candidate).is_file():
-            return problem.parent / candidate
-    return None
+    """The domain of a PDDL problem, or ``None`` when there is none beside it."""
+    try:
+        return find_pddl_domain(problem)
+    except InputError:
+        return None
 
 
 def expand_problem_set(set_name: str, patterns: list[str], base: Path, where: str) -> list[ProblemFile]:
