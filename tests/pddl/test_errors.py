@@ -80,18 +80,18 @@ def domain_with(action: str, extra: str = "") -> str:
         ("(:acton a)", 4, "expected :requirements, :types"),
     ],
 )
-def test_domain_errors_name_file_line_and_expectation(write, action, line, message):
+def test_domain_errors_name_file_line_and_expectation(write_task, action, line, message):
     with pytest.raises(InputError) as error:
-        write(domain_with(action), PROBLEM)
+        write_task(domain_with(action), PROBLEM)
     assert error.value.path.endswith("domain.pddl")
     assert error.value.line == line
     assert message in error.value.message
 
 
-def test_unsupported_requirement(write):
+def test_unsupported_requirement(write_task):
     domain = "(define (domain d)\n (:requirements :strips :durative-actions))"
     with pytest.raises(InputError, match=r"domain.pddl:2:2: not supported: requirement :durative"):
-        write(domain, PROBLEM)
+        write_task(domain, PROBLEM)
 
 
 @pytest.mark.parametrize(
@@ -104,9 +104,9 @@ def test_unsupported_requirement(write):
         ("(domain d)", 1, "expected '(define (domain NAME) ...)'"),
     ],
 )
-def test_syntax_errors(write, text, line, message):
+def test_syntax_errors(write_task, text, line, message):
     with pytest.raises(InputError) as error:
-        write(text, PROBLEM)
+        write_task(text, PROBLEM)
     assert error.value.line == line
     assert message in error.value.message
 
@@ -139,28 +139,28 @@ def test_syntax_errors(write, text, line, message):
         ),
     ],
 )
-def test_problem_errors(write, problem, line, message):
+def test_problem_errors(write_task, problem, line, message):
     domain = domain_with("(:action a :parameters (?x) :precondition (p ?x) :effect (p ?x))")
     with pytest.raises(InputError) as error:
-        write(domain, problem)
+        write_task(domain, problem)
     assert error.value.path.endswith("problem.pddl")
     assert error.value.line == line
     assert message in error.value.message
 
 
-def test_error_text_has_file_line_and_column(write):
+def test_error_text_has_file_line_and_column(write_task):
     with pytest.raises(InputError) as error:
-        write(
+        write_task(
             domain_with("(:action a :parameters (?x) :precondition (r ?x) :effect (p ?x))"), PROBLEM
         )
     assert str(error.value).endswith("domain.pddl:4:45: undeclared predicate 'r'")
 
 
-def test_derived_predicates_cannot_be_effects(write):
+def test_derived_predicates_cannot_be_effects(write_task):
     domain = domain_with(
         "(:action a :parameters (?x) :effect (p ?x))", "\n  (:derived (p ?x) (q ?x ?x))"
     )
     with pytest.raises(InputError) as error:
-        write(domain, PROBLEM)
+        write_task(domain, PROBLEM)
     assert error.value.line == 5
     assert "changes 'p', a derived predicate" in error.value.message

@@ -66,7 +66,7 @@ def test_derived_predicates_and_costs(load):
     assert (Atom("length", ("hall1", "r2")), 5) in task.problem.numeric
 
 
-def test_types_without_typing_requirement_and_implicit_object(write):
+def test_types_without_typing_requirement_and_implicit_object(write_task):
     domain = """(define (domain lift) (:requirements :strips)
       (:types passenger - object floor)
       (:predicates (at ?p - passenger ?f - floor))
@@ -74,18 +74,18 @@ def test_types_without_typing_requirement_and_implicit_object(write):
          :effect (and (at ?p ?g) (not (at ?p ?f)))))"""
     problem = """(define (problem p) (:domain lift) (:objects p0 - passenger f0 f1 - floor)
       (:init (at p0 f0)) (:goal (at p0 f1)))"""
-    task = write(domain, problem)
+    task = write_task(domain, problem)
     assert task.objects_of(("floor",)) == ("f0", "f1")
     assert task.objects_of(("object",)) == ("f0", "f1", "p0")
 
 
-def test_comments_and_extra_requirements(write):
+def test_comments_and_extra_requirements(write_task):
     domain = """; leading comment
     (define (domain d) ; trailing
       (:requirements :strips :some-future-flag)
       (:predicates (p ?x)) ; (:predicates (q))
       (:action a :parameters (?x) :precondition (p ?x) :effect (not (p ?x))))"""
-    task = write(domain, SIMPLE_PROBLEM)
+    task = write_task(domain, SIMPLE_PROBLEM)
     assert task.domain.requirements == (":strips", ":some-future-flag")
 
 

@@ -44,8 +44,8 @@ TOWER_PROBLEM = """(define (problem t) (:domain tower) (:objects a b c)
   (:init (on a b) (on b c) (free a)) (:goal (top a)))"""
 
 
-def test_derived_predicates_become_axioms_the_prover_uses(write, make_planner):
-    task = write(TOWER_DOMAIN, TOWER_PROBLEM)
+def test_derived_predicates_become_axioms_the_prover_uses(write_task, make_planner):
+    task = write_task(TOWER_DOMAIN, TOWER_PROBLEM)
     problem = to_problem(task)
     (axiom,) = problem.axioms
     assert isinstance(axiom, Forall) and isinstance(axiom.body, Implies)
