@@ -179,7 +179,7 @@ def test_report_differential_counts() -> None:
 # -- E prover on TPTP ------------------------------------------------------------------
 
 EPROVER = shutil.which("eprover")
-TPTP = Path("/work/shared/bench/tptp/dev")
+TPTP = Path(__file__).resolve().parents[2] / "shared" / "bench" / "tptp" / "dev"  # ../shared
 E_STATUS = {
     "Theorem": PROVED,
     "Unsatisfiable": PROVED,
