@@ -15,9 +15,9 @@ from __future__ import annotations
 
 import sys
 import time
-from pathlib import Path
 
 import pytest
+from shared_bench import shared_bench
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
@@ -30,14 +30,7 @@ CONFIGS = [("lazy-gbfs", "ff"), ("gbfs", "ff"), ("astar", "lmcut"), ("breadth-fi
 SCALING = ["gripper/task01", "gripper/task20", "logistics/task01", "logistics/task28"]
 
 
-def _bench_dir() -> Path | None:
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
-
-
-BENCH = _bench_dir()
+BENCH = shared_bench("ipc")
 
 
 def _task(name: str) -> GroundTask:

@@ -19,6 +19,7 @@ import time
 from pathlib import Path
 
 import pytest
+from shared_bench import shared_bench
 
 from strips_framework.grounding import ground
 from strips_framework.pddl import find_domain, load_task
@@ -26,14 +27,7 @@ from strips_framework.pddl import find_domain, load_task
 TASKS = ["blocks/task01", "logistics/task28", "rovers/task30", "satellite/task20"]
 
 
-def _bench_dir() -> Path | None:
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
-
-
-BENCH = _bench_dir()
+BENCH = shared_bench("ipc")
 
 
 def _problem(name: str) -> Path:

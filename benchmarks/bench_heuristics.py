@@ -12,9 +12,9 @@ For pyperplan's speed on the same states see ``heuristics_vs_pyperplan.py``.
 from __future__ import annotations
 
 import random
-from pathlib import Path
 
 import pytest
+from shared_bench import shared_bench
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
@@ -27,14 +27,7 @@ STATES = 100
 REGISTRY = Registry.from_plugins()
 
 
-def _bench_dir() -> Path | None:
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
-
-
-BENCH = _bench_dir()
+BENCH = shared_bench("ipc")
 
 
 def random_walk_states(task: GroundTask, count: int, seed: int = 1) -> list[int]:

@@ -5,18 +5,16 @@
 Each case runs ``strips solve PROBLEM --plan-file PLAN`` in-process (loading, grounding and
 search: what a user waits for), then checks the plan with ``strips validate``. The
 heuristics vary only for strategies that search ground tasks (the others do not use
-one). A combination the planner refuses (exit code 2) is skipped with its message. Skipped entirely until ``strips_framework.pddl`` exists, or
-without ``shared/bench/ipc`` beside the repository.
+one). A combination the planner refuses (exit code 2) is skipped with its message. Every
+case skips without ``shared/bench/ipc`` beside the repository.
 """
 
 import contextlib
 import io
-from pathlib import Path
 
 import pytest
-
-pytest.importorskip("strips_framework.pddl")
 import tomli_w
+from shared_bench import shared_bench
 
 from strips_framework.bench.problems import find_domain
 from strips_framework.cli import main
@@ -36,14 +34,7 @@ def _heuristics(strategy: str) -> list[str | None]:
 COMBINATIONS = [(s, h) for s in REGISTRY.names("strategy") for h in _heuristics(s)]
 
 
-def _bench_dir() -> Path | None:
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
-
-
-BENCH = _bench_dir()
+BENCH = shared_bench("ipc")
 
 
 def _quiet(argv: list[str]) -> tuple[int, str]:

@@ -7,9 +7,8 @@ smoke test in the normal test run (one round each). Without ``shared/bench/tptp`
 the repository the cases skip.
 """
 
-from pathlib import Path
-
 import pytest
+from shared_bench import shared_bench
 
 from strips_framework.formats.tptp import load_tptp, szs_status
 
@@ -26,14 +25,7 @@ PROBLEMS = {
 EFFORT = 500
 
 
-def _bench_dir() -> Path | None:
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "tptp").is_dir():
-            return parent / "shared" / "bench" / "tptp"
-    return None
-
-
-BENCH = _bench_dir()
+BENCH = shared_bench("tptp")
 
 
 @pytest.mark.skipif(BENCH is None, reason="shared/bench/tptp not found")
