@@ -45,13 +45,28 @@ def strips_command(*args: str) -> list[str]:
     return [sys.executable, *STRIPS, *args]
 
 
+class AnyProblemConfig:
+    """What most configurations share: they take every problem, need nothing installed,
+    read the problem where it is and write the plan to the run's ``plan.txt``."""
+
+    copies_inputs = False
+
+    def plan_file(self, files: RunFiles) -> Path:
+        return files.plan
+
+    def accepts(self, problem: ProblemFile) -> bool:
+        return True
+
+    def missing(self) -> str | None:
+        return None
+
+
 @frozen
-class PlannerConfig:
+class PlannerConfig(AnyProblemConfig):
     """``strips solve PROBLEM --json`` with ``data`` written out as its ``strips.toml``."""
 
     name: str
     data: dict[str, Any]
-    copies_inputs = False
 
     def command(self, files: RunFiles) -> list[str]:
         config = files.folder / "strips.toml"
@@ -61,26 +76,16 @@ class PlannerConfig:
             "--config", str(config),
         )
 
-    def plan_file(self, files: RunFiles) -> Path:
-        return files.plan
-
-    def accepts(self, problem: ProblemFile) -> bool:
-        return True
-
-    def missing(self) -> str | None:
-        return None
-
     def describe(self) -> dict[str, Any]:
         return {"kind": "planner", "strips.toml": self.data}
 
 
 @frozen
-class CommandConfig:
+class CommandConfig(AnyProblemConfig):
     """A command line with placeholders ``{python} {problem} {domain} {plan} {folder}``."""
 
     name: str
     template: tuple[str, ...]
-    copies_inputs = False
 
     def command(self, files: RunFiles) -> list[str]:
         values = {
@@ -89,15 +94,6 @@ class CommandConfig:
             "folder": str(files.folder),
         }
         return [part.format(**values) for part in self.template]
-
-    def plan_file(self, files: RunFiles) -> Path:
-        return files.plan
-
-    def accepts(self, problem: ProblemFile) -> bool:
-        return True
-
-    def missing(self) -> str | None:
-        return None
 
     def describe(self) -> dict[str, Any]:
         return {"kind": "command", "command": list(self.template)}
