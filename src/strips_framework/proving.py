@@ -5,31 +5,45 @@ world model M, and for which instance p' of its parameters? A prover refutes
 ``M ∪ ¬G(p)``; the clauses of ¬G(p) are the set of support. When it fails within its
 effort bound, the clauses it derived from ¬G(p) are the *uncompleted proof*, from which
 the difference extractor computes the node's difference (III.C).
+
+A search asks that question about thousands of world models that all share one M0 and
+differ from it by a few ADDITIONS and DELETIONS (III.D). So a prover is *opened* once per
+problem on M0 (:meth:`TheoremProver.open`), which validates, clausifies and indexes M0
+once, and the :class:`ProverSession` it returns is asked about world models: it sees a
+model as M0 with its additions made visible and its deletions (and the derived clauses
+resting on them) hidden, without copying M0. A one-off question (a TPTP problem, the
+conformance kit) is a :class:`ProofTask`, answered by :meth:`TheoremProver.prove`.
+A prover that implements only ``prove`` still works: :func:`open_session` wraps it in a
+:class:`TaskSession`, which hands it each model as a fresh task (correct, but each attempt
+then costs time linear in |M0|).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from typing import Any, ClassVar, Protocol
 
 from attrs import Attribute, field, frozen, validators
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param, Term
+from strips_framework.world import InitialModel, WorldModel
 
 Answer = tuple[tuple[Param, Term], ...]
 
 
-def _check_clauses(_task: Any, attribute: Attribute, clauses: Iterable[object]) -> None:
+def check_clauses(what: str, clauses: Iterable[object]) -> None:
+    """Refuse a malformed clause (``TypeError``/``ValueError`` naming ``what[number]``)."""
     for number, clause in enumerate(clauses, start=1):
         if not isinstance(clause, Clause):
-            raise TypeError(
-                f"ProofTask.{attribute.name}[{number}] must be a Clause, "
-                f"not {type(clause).__name__}"
-            )
+            raise TypeError(f"{what}[{number}] must be a Clause, not {type(clause).__name__}")
         problem = _malformed(clause)
         if problem:
-            raise ValueError(f"ProofTask.{attribute.name}[{number}] ({clause!r}): {problem}")
+            raise ValueError(f"{what}[{number}] ({clause!r}): {problem}")
+
+
+def _check_clauses(_task: Any, attribute: Attribute, clauses: Iterable[object]) -> None:
+    check_clauses(f"ProofTask.{attribute.name}", clauses)
 
 
 def _malformed(clause: Clause) -> str | None:
@@ -110,11 +124,33 @@ class ProofResult:
         return self.status == PROVED
 
 
+class ProverSession(Protocol):
+    """A prover opened on one M0, asked about the world models built on it.
+
+    ``prove(model, negated_goal, effort, max_answers)`` answers exactly what
+    ``prover.prove(ProofTask(tuple(model.clauses()), negated_goal, effort, max_answers,
+    unique_names))`` would (the conformance kit checks this over long random sequences of
+    models); only its cost may differ. ``model.initial`` is always the M0 the session was
+    opened on.
+    """
+
+    def prove(
+        self,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+    ) -> ProofResult:
+        """Try to refute the clauses visible in ``model`` ∪ ``negated_goal``."""
+        ...
+
+
 class TheoremProver(Protocol):
     """A prover implementation, registered through ``strips_register_provers``.
 
     Implementations are attrs classes whose fields are their options (the config passes
-    them as keyword arguments); ``name`` is what a config names them by.
+    them as keyword arguments); ``name`` is what a config names them by. ``open`` is
+    optional (see :func:`open_session`); a prover that can index M0 once implements it.
     """
 
     name: ClassVar[str]
@@ -122,3 +158,43 @@ class TheoremProver(Protocol):
     def prove(self, task: ProofTask) -> ProofResult:
         """Try to refute ``task.axioms`` ∪ ``task.negated_goal``."""
         ...
+
+
+class _Opens(Protocol):
+    def open(self, initial: InitialModel, unique_names: bool) -> ProverSession: ...
+
+
+def open_session(prover: TheoremProver, initial: InitialModel, unique_names: bool) -> ProverSession:
+    """A session of ``prover`` on M0: its own (``prover.open``) if it has one, else a
+    :class:`TaskSession`. M0's clauses are validated here, once."""
+    check_clauses("M0", initial.clauses)
+    opener = getattr(prover, "open", None)
+    if opener is None:
+        return TaskSession(prover, unique_names)
+    session: ProverSession = opener(initial, unique_names)
+    return session
+
+
+class TaskSession:
+    """The adapter for a prover written for one :class:`ProofTask` at a time: each model
+    becomes a fresh task over its visible clauses."""
+
+    def __init__(self, prover: TheoremProver, unique_names: bool) -> None:
+        self.prover = prover
+        self.unique_names = unique_names
+
+    def prove(
+        self,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+    ) -> ProofResult:
+        task = ProofTask(
+            axioms=tuple(model.clauses()),
+            negated_goal=tuple(negated_goal),
+            effort=effort,
+            max_answers=max_answers,
+            unique_names=self.unique_names,
+        )
+        return self.prover.prove(task)

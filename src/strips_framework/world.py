@@ -23,12 +23,15 @@ class InitialModel:
     """M0: its clauses, and for each derived clause the indices of its supports.
 
     ``facts`` maps each ground unit fact of M0 to its index in ``clauses``, so operators
-    can find what to delete without scanning.
+    can find what to delete without scanning; ``dependents`` maps a clause index to the
+    derived clauses resting on it, so a model's hidden clauses are found from its
+    deletions alone (:meth:`WorldModel.hidden`).
     """
 
     clauses: tuple[Clause, ...] = field(converter=tuple)
     supports: dict[int, frozenset[int]] = field(factory=dict)
     facts: dict[Atom, int] = field(init=False)
+    dependents: dict[int, tuple[int, ...]] = field(init=False)
 
     def __attrs_post_init__(self) -> None:
         facts = {
@@ -37,6 +40,11 @@ class InitialModel:
             if c.is_unit and c.literals[0][0] and i not in self.supports
         }
         object.__setattr__(self, "facts", facts)
+        dependents: dict[int, list[int]] = {}
+        for derived, rests_on in self.supports.items():
+            for index in rests_on:
+                dependents.setdefault(index, []).append(derived)
+        object.__setattr__(self, "dependents", {i: tuple(d) for i, d in dependents.items()})
 
 
 @frozen(cache_hash=True)
@@ -58,8 +66,21 @@ class WorldModel:
             if rests_on is not None and not rests_on.isdisjoint(deleted):
                 continue
             yield clause
-        for atom in sorted(self.additions, key=repr):
-            yield Clause(((True, atom),), label="added")
+        yield from self.added_clauses()
+
+    def added_clauses(self) -> tuple[Clause, ...]:
+        """The additions as unit clauses, in a fixed order (a prover's search, and so its
+        answers, must not depend on hash order)."""
+        return tuple(Clause(((True, atom),), label="added") for atom in sorted(self.additions, key=repr))
+
+    def hidden(self) -> set[int]:
+        """The indices of M0's clauses this model does not see: its deletions and the
+        derived clauses resting on one. Costs time in the deletions, not in |M0|."""
+        hidden = set(self.deletions)
+        dependents = self.initial.dependents
+        for index in self.deletions:
+            hidden.update(dependents.get(index, ()))
+        return hidden
 
     def holds(self, atom: Atom) -> bool:
         """Whether the ground primitive ``atom`` is present as a fact (no reasoning)."""

@@ -1,6 +1,7 @@
 """Asking the configured prover about goal wffs in world models, with the bookkeeping the
-searches need: clause forms computed once per goal, answers cached per (model, goal), and
-the time spent proving measured for the paper's Table 2."""
+searches need: one prover session per problem (M0 indexed once), clause forms computed
+once per goal, answers cached per (model, goal), and the time spent proving measured for
+the paper's Table 2."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, negated_goal_clauses
 from strips_framework.logic.formulas import Formula
 from strips_framework.problem import Problem
-from strips_framework.proving import ProofResult, ProofTask, TheoremProver
+from strips_framework.proving import ProofResult, ProverSession, TheoremProver, open_session
 from strips_framework.world import InitialModel, WorldModel, initial_model
 
 
@@ -25,6 +26,7 @@ class GoalProver:
     effort: int
     skolem: SkolemNames = field(factory=SkolemNames)
     initial: InitialModel = field(init=False)
+    session: ProverSession = field(init=False)
     seconds: float = 0.0
     attempts: int = 0
     _negations: dict[Formula, tuple[Clause, ...]] = field(factory=dict)
@@ -32,6 +34,7 @@ class GoalProver:
 
     def __attrs_post_init__(self) -> None:
         self.initial = initial_model(self.problem, self.skolem)
+        self.session = open_session(self.prover, self.initial, self.problem.unique_names)
 
     def root_model(self) -> WorldModel:
         return WorldModel(self.initial)
@@ -49,15 +52,9 @@ class GoalProver:
         cached = self._cache.get(key)
         if cached is not None:
             return cached
-        task = ProofTask(
-            axioms=tuple(model.clauses()),
-            negated_goal=self.negated(goal),
-            effort=self.effort,
-            max_answers=max_answers,
-            unique_names=self.problem.unique_names,
-        )
+        negated = self.negated(goal)
         started = time.perf_counter()
-        result = self.prover.prove(task)
+        result = self.session.prove(model, negated, self.effort, max_answers)
         self.seconds += time.perf_counter() - started
         self.attempts += 1
         self._cache[key] = result

@@ -10,7 +10,7 @@ descendants" (paper, III.A).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Param, Term
@@ -149,22 +149,24 @@ def eligible(literals: tuple[Literal, ...], selecting: bool) -> tuple[int, ...]:
     return tuple(range(len(literals)))
 
 
+#: The retained literals a literal may resolve with: ``(clause, position)`` pairs of the
+#: opposite sign (see :class:`~strips_resolution_prover.partners.PartnerIndex`).
+Partners = Callable[[Literal], Iterable[tuple[PClause, int]]]
+
+
 def resolvents(
     given: PClause,
     renamed: tuple[Literal, ...],
     selected: tuple[int, ...],
-    partners: dict[tuple[bool, str, int], list[tuple[PClause, int]]],
+    partners: Partners,
     limits: Limits,
 ) -> Iterator[PClause]:
     """Binary resolvents of the given clause (renamed apart) on its ``selected`` literals
     with indexed partners (which hold only their own eligible literals)."""
     for i in selected:
-        positive, atom = renamed[i]
-        entries = partners.get((not positive, atom[0], len(atom)))
-        if not entries:
-            continue
+        atom = renamed[i][1]
         rest = renamed[:i] + renamed[i + 1 :]
-        for partner, j in entries:
+        for partner, j in partners(renamed[i]):
             if partner.dead or _clash(atom, partner.literals[j][1]):
                 continue
             if given.bindings or partner.bindings:

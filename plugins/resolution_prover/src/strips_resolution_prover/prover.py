@@ -6,10 +6,20 @@ round picks a given clause, drops it if a retained clause subsumes it, deletes t
 set-of-support clauses it subsumes, indexes it, and adds its resolvents with the retained
 clauses, its factors and (with equality) its paramodulants to the queue. Only processed
 clauses are partners, so every inference has a set-of-support premise.
+
+Since usable clauses never change, a :class:`ResolutionSession` imports, simplifies,
+factors and indexes M0 once (:class:`_Retained`), and each attempt adds only what is its
+own: the model's ADDITIONS and the set of support, in a second layer. A model's deletions
+hide M0 clauses by id, so nothing of M0 is copied or walked per attempt (paper, III.D).
+Without a set of support the axioms are resolved with each other, which needs them all in
+the attempt's own layer: that mode has no session speed-up.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Set as AbstractSet
+from itertools import chain
 from typing import ClassVar
 
 from attrs import define, field
@@ -26,6 +36,7 @@ from strips_framework.capabilities import (
 )
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
+from strips_framework.world import InitialModel, WorldModel
 from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
@@ -39,11 +50,10 @@ from strips_resolution_prover.inference import (
     factors,
     resolvents,
 )
+from strips_resolution_prover.partners import PartnerIndex
 from strips_resolution_prover.pclause import PClause, from_clause, offset, renumber, term_depth
 from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
-
-IndexKey = tuple[bool, str, int]
 
 
 @define(frozen=True)
@@ -77,43 +87,200 @@ class ResolutionProver:
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
-        return _Saturation(self, task).run()
+        initial = InitialModel(task.axioms)
+        return ResolutionSession(self, initial, task.unique_names).prove(
+            WorldModel(initial), task.negated_goal, task.effort, task.max_answers
+        )
+
+    def open(self, initial: InitialModel, unique_names: bool) -> ResolutionSession:
+        """A session on M0, which is imported and indexed here, once."""
+        return ResolutionSession(self, initial, unique_names)
+
+
+def _mentions_equality(clauses: Iterable[Clause]) -> bool:
+    return any(is_equality(atom) for clause in clauses for _, atom in clause.literals)
+
+
+def _simplify(
+    clause: PClause, options: ResolutionProver, equality: bool, unique_names: bool, limits: Limits
+) -> PClause | None:
+    """Evaluate equalities and apply the size limits; ``None`` deletes the clause."""
+    literals = clause.literals
+    if equality:
+        evaluated = evaluate(literals, unique_names)
+        if evaluated is None:
+            return None
+        if evaluated is not literals:
+            numbering: dict[int, int] = {}
+            literals = tuple((pos, renumber(atom, numbering)) for pos, atom in evaluated)
+            clause = PClause(
+                literals,
+                len(numbering),
+                clause.bindings,
+                sos=clause.sos,
+                parents=clause.parents,
+                label=clause.label,
+            )
+    limit = options.max_clause_literals
+    depth = options.max_term_depth
+    if (limit is not None and len(literals) > limit) or (
+        depth is not None and any(term_depth(atom) - 1 > depth for _, atom in literals)
+    ):
+        limits.discarded = True
+        return None
+    return clause
+
+
+class _Retained:
+    """Clauses that are partners for given clauses: numbered from ``first_id``, indexed
+    for resolution and subsumption, and listed for paramodulation."""
+
+    def __init__(self, first_id: int) -> None:
+        self.first_id = first_id
+        self.clauses: list[PClause] = []
+        self.index = PartnerIndex()
+        self.subsumption = SubsumptionIndex()
+        self.processed: list[PClause] = []
+        self.equational: list[PClause] = []
+
+    def register(self, clause: PClause) -> None:
+        clause.id = self.first_id + len(self.clauses)
+        self.clauses.append(clause)
+
+    def retain(self, clause: PClause, selecting: bool, deletable: bool) -> None:
+        self.processed.append(clause)
+        if any(pos and is_equality(atom) for pos, atom in clause.literals):
+            self.equational.append(clause)
+        self.subsumption.add(clause, deletable=deletable)
+        for i in eligible(clause.literals, selecting):
+            self.index.add(clause, i)
+
+
+class _Axioms(_Retained):
+    """M0 as a session keeps it: its usable clauses (and their factors), with the M0
+    clause each came from (``by_origin``), so a model's deletions hide them by id."""
+
+    def __init__(
+        self, options: ResolutionProver, initial: InitialModel, unique_names: bool
+    ) -> None:
+        super().__init__(0)
+        self.by_origin: dict[int, list[int]] = {}
+        self.refutations: list[PClause] = []
+        self.limits = Limits(options.max_weight)
+        self.uses_equality = _mentions_equality(initial.clauses)
+        if not options.set_of_support:
+            return  # every attempt resolves its axioms afresh (module docstring)
+        for origin, axiom in enumerate(initial.clauses):
+            imported = from_clause(axiom, sos=False)
+            if imported is not None:
+                self._add(imported, origin, options, unique_names)
+
+    def _add(
+        self, clause: PClause, origin: int, options: ResolutionProver, unique_names: bool
+    ) -> None:
+        simplified = _simplify(clause, options, self.uses_equality, unique_names, self.limits)
+        if simplified is None:
+            return
+        self.register(simplified)
+        self.by_origin.setdefault(origin, []).append(simplified.id)
+        simplified.processed = True
+        if not simplified.literals:
+            self.refutations.append(simplified)
+            return
+        self.retain(simplified, selecting=False, deletable=False)
+        for factor in factors(simplified, self.limits):
+            usable = PClause(
+                factor.literals, factor.nvars, factor.bindings, sos=False, parents=factor.parents
+            )
+            self._add(usable, origin, options, unique_names)
+
+
+class ResolutionSession:
+    """The prover opened on one M0 (see the module docstring)."""
+
+    def __init__(self, options: ResolutionProver, initial: InitialModel, unique_names: bool) -> None:
+        self.options = options
+        self.initial = initial
+        self.unique_names = unique_names
+        self.axioms = _Axioms(options, initial, unique_names)
+
+    def prove(
+        self,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+    ) -> ProofResult:
+        """Refute the clauses visible in ``model`` ∪ ``negated_goal`` within ``effort``
+        given clauses."""
+        hidden_m0 = model.hidden()
+        if self.options.set_of_support:
+            hidden = {cid for index in hidden_m0 for cid in self.axioms.by_origin.get(index, ())}
+            extra: Sequence[Clause] = model.added_clauses()
+        else:
+            hidden, extra = set(), tuple(model.clauses())
+        attempt = _Saturation(
+            self.options,
+            self.axioms,
+            hidden,
+            extra,
+            tuple(negated_goal),
+            unique_names=self.unique_names,
+            has_axioms=bool(extra) or len(hidden_m0) < len(self.initial.clauses),
+        )
+        return attempt.run(effort, max_answers)
 
 
 class _Saturation:
-    """The state of one proof attempt.
+    """The state of one proof attempt: the session's axioms, less ``hidden``, and a layer
+    of its own for ``extra`` (the model's additions; with no set of support, every
+    visible clause) and the set of support.
 
     New clauses get the cheap checks (evaluation, duplicates, unit subsumption); the full
     forward subsumption check runs when a clause is picked, as in DISCOUNT, since most
     queued clauses are never picked.
     """
 
-    def __init__(self, options: ResolutionProver, task: ProofTask) -> None:
+    def __init__(
+        self,
+        options: ResolutionProver,
+        axioms: _Axioms,
+        hidden: AbstractSet[int],
+        extra: Sequence[Clause],
+        negated_goal: tuple[Clause, ...],
+        *,
+        unique_names: bool,
+        has_axioms: bool,
+    ) -> None:
         self.options = options
-        self.task = task
-        self.clauses: list[PClause] = []
+        self.axioms = axioms
+        self.hidden = hidden
+        self.extra = extra
+        self.negated_goal = negated_goal
+        self.unique_names = unique_names
+        self.own = _Retained(len(axioms.clauses))
         self.queue = ClauseQueue(options.pick_given_ratio, options.unit_preference)
-        self.index: dict[IndexKey, list[tuple[PClause, int]]] = {}
-        self.subsumption = SubsumptionIndex()
-        self.processed: list[PClause] = []
-        self.equational: list[PClause] = []
         self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
         self.answers: list[Answer] = []
+        self.max_answers = 1
         self.limits = Limits(options.max_weight)
+        self.limits.discarded = axioms.limits.discarded
         self.refutation: PClause | None = None
         # Literal selection needs every clause to be resolved with every other: it is
         # incomplete with a set of support, whose usable clauses never meet each other.
-        self.selecting = not options.set_of_support or not task.axioms
-        self.uses_equality = any(
-            is_equality(atom)
-            for clause in (*task.axioms, *task.negated_goal)
-            for _, atom in clause.literals
+        self.selecting = not options.set_of_support or not has_axioms
+        self.uses_equality = axioms.uses_equality or _mentions_equality(
+            chain(extra, negated_goal)
         )
 
     # -- the loop -----------------------------------------------------------------------
 
-    def run(self) -> ProofResult:
-        for axiom in self.task.axioms:
+    def run(self, effort_bound: int, max_answers: int) -> ProofResult:
+        self.max_answers = max_answers
+        for refutation in self.axioms.refutations:
+            if refutation.id not in self.hidden:
+                self._record_refutation(refutation)
+        for axiom in self.extra:
             imported = from_clause(axiom, sos=False)
             if imported is None:
                 continue
@@ -121,16 +288,16 @@ class _Saturation:
                 self._add_axiom(imported)
             else:
                 self._add_new(imported)
-        for goal in self.task.negated_goal:
+        for goal in self.negated_goal:
             imported = from_clause(goal, sos=True)
             if imported is not None:
                 self._add_new(imported)
         effort = 0
-        while not self._done() and effort < self.task.effort:
+        while not self._done() and effort < effort_bound:
             given = self.queue.pop()
             if given is None:
                 break
-            if self._answered(given) or self.subsumption.is_subsumed(given):
+            if self._answered(given) or self._subsumed(given):
                 given.dead = True
                 continue
             effort += 1
@@ -138,16 +305,16 @@ class _Saturation:
         return self._result(effort)
 
     def _done(self) -> bool:
-        return len(self.answers) >= self.task.max_answers
+        return len(self.answers) >= self.max_answers
 
     def _process(self, given: PClause) -> None:
-        for victim in self.subsumption.subsumed_by(given):
+        for victim in self.own.subsumption.subsumed_by(given):
             victim.dead = True
-            self.subsumption.note_deleted()
+            self.own.subsumption.note_deleted()
         self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
         selected = eligible(given.literals, self.selecting)
-        for clause in resolvents(given, renamed, selected, self.index, self.limits):
+        for clause in resolvents(given, renamed, selected, self._partners, self.limits):
             self._add_new(clause)
             if self._done():
                 return
@@ -160,33 +327,55 @@ class _Saturation:
         for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
-        partners = self.processed if has_equation else self.equational
-        for clause in paramodulants(given, renamed, list(partners), self.limits):
+        lists = (
+            (self.axioms.processed, self.own.processed)
+            if has_equation
+            else (self.axioms.equational, self.own.equational)
+        )
+        partners = [c for c in chain(*lists) if c.id not in self.hidden]
+        for clause in paramodulants(given, renamed, partners, self.limits):
             self._add_new(clause)
             if self._done():
                 return
 
-    # -- clause bookkeeping ---------------------------------------------------------------
+    # -- the two layers -------------------------------------------------------------------
 
-    def _register(self, clause: PClause) -> None:
-        clause.id = len(self.clauses)
-        self.clauses.append(clause)
+    def _partners(self, literal: Literal) -> Iterator[tuple[PClause, int]]:
+        hidden = self.hidden
+        if hidden:
+            for entry in self.axioms.index.partners(literal):
+                if entry[0].id not in hidden:
+                    yield entry
+        else:
+            yield from self.axioms.index.partners(literal)
+        yield from self.own.index.partners(literal)
+
+    def _subsumed_by_unit(self, clause: PClause) -> bool:
+        return self.axioms.subsumption.is_subsumed_by_unit(
+            clause, self.hidden
+        ) or self.own.subsumption.is_subsumed_by_unit(clause)
+
+    def _subsumed(self, clause: PClause) -> bool:
+        return self.axioms.subsumption.is_subsumed(
+            clause, self.hidden
+        ) or self.own.subsumption.is_subsumed(clause)
+
+    def _clause(self, cid: int) -> PClause:
+        first = self.own.first_id
+        return self.axioms.clauses[cid] if cid < first else self.own.clauses[cid - first]
+
+    # -- clause bookkeeping ---------------------------------------------------------------
 
     def _retain(self, clause: PClause) -> None:
         """Make ``clause`` a partner for later given clauses."""
-        self.processed.append(clause)
-        if any(pos and is_equality(atom) for pos, atom in clause.literals):
-            self.equational.append(clause)
-        self.subsumption.add(clause, deletable=clause.sos or not self.options.set_of_support)
-        for i in eligible(clause.literals, self.selecting):
-            positive, atom = clause.literals[i]
-            self.index.setdefault((positive, atom[0], len(atom)), []).append((clause, i))
+        deletable = clause.sos or not self.options.set_of_support
+        self.own.retain(clause, self.selecting, deletable)
 
     def _add_axiom(self, clause: PClause) -> None:
         simplified = self._simplify(clause)
         if simplified is None:
             return
-        self._register(simplified)
+        self.own.register(simplified)
         simplified.processed = True
         if not simplified.literals:
             self._record_refutation(simplified)
@@ -207,48 +396,24 @@ class _Saturation:
     def _add_new(self, clause: PClause) -> None:
         """Simplify a new set-of-support clause and queue it, or record a refutation."""
         if clause.parents and not self.options.set_of_support:
-            clause.sos = any(self.clauses[parent].sos for parent in clause.parents)
+            clause.sos = any(self._clause(parent).sos for parent in clause.parents)
         simplified = self._simplify(clause)
         if simplified is None:
             return
         if not simplified.literals:
             if simplified.bindings not in self.answers:
-                self._register(simplified)
+                self.own.register(simplified)
                 self._record_refutation(simplified)
             return
         signature = (simplified.literals, simplified.bindings)
-        if signature in self.seen or self.subsumption.is_subsumed_by_unit(simplified):
+        if signature in self.seen or self._subsumed_by_unit(simplified):
             return
         self.seen.add(signature)
-        self._register(simplified)
+        self.own.register(simplified)
         self.queue.push(simplified)
 
     def _simplify(self, clause: PClause) -> PClause | None:
-        """Evaluate equalities and apply the size limits; ``None`` deletes the clause."""
-        literals = clause.literals
-        if self.uses_equality:
-            evaluated = evaluate(literals, self.task.unique_names)
-            if evaluated is None:
-                return None
-            if evaluated is not literals:
-                numbering: dict[int, int] = {}
-                literals = tuple((pos, renumber(atom, numbering)) for pos, atom in evaluated)
-                clause = PClause(
-                    literals,
-                    len(numbering),
-                    clause.bindings,
-                    sos=clause.sos,
-                    parents=clause.parents,
-                    label=clause.label,
-                )
-        limit = self.options.max_clause_literals
-        depth = self.options.max_term_depth
-        if (limit is not None and len(literals) > limit) or (
-            depth is not None and any(term_depth(atom) - 1 > depth for _, atom in literals)
-        ):
-            self.limits.discarded = True
-            return None
-        return clause
+        return _simplify(clause, self.options, self.uses_equality, self.unique_names, self.limits)
 
     def _record_refutation(self, clause: PClause) -> None:
         self.answers.append(clause.bindings)
@@ -271,7 +436,7 @@ class _Saturation:
             )
         saturated = not len(self.queue) and not self.limits.discarded
         status = SATURATED if saturated else GAVE_UP
-        uncompleted = tuple(c.to_clause() for c in self.clauses if c.sos and not c.dead)
+        uncompleted = tuple(c.to_clause() for c in self.own.clauses if c.sos and not c.dead)
         return ProofResult(status, uncompleted=uncompleted, effort_used=effort)
 
     def _proof(self) -> tuple[Clause, ...]:
@@ -283,5 +448,5 @@ class _Saturation:
             cid = stack.pop()
             if cid not in needed:
                 needed.add(cid)
-                stack.extend(self.clauses[cid].parents)
-        return tuple(self.clauses[cid].to_clause() for cid in sorted(needed))
+                stack.extend(self._clause(cid).parents)
+        return tuple(self._clause(cid).to_clause() for cid in sorted(needed))

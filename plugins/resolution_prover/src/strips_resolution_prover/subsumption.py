@@ -12,6 +12,7 @@ matching is tried (see :func:`~strips_resolution_prover.pclause.features_of`).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Term
@@ -142,12 +143,17 @@ class SubsumptionIndex:
             for key in (*clause.keyset, *clause.bindings):
                 self._by_key.setdefault(key, []).append(clause)
 
-    def is_subsumed_by_unit(self, d: PClause) -> bool:
-        """Whether a unit clause matches a literal of ``d``."""
+    def is_subsumed_by_unit(self, d: PClause, hidden: AbstractSet[int] = frozenset()) -> bool:
+        """Whether a unit clause matches a literal of ``d``. Clauses whose ids are in
+        ``hidden`` are not there (a session's M0 clauses that the model does not see)."""
         bindings = set(d.bindings)
         for literal in d.literals:
             for unit in self._ground_units.get(literal, ()):
-                if not unit.dead and (not unit.bindings or set(unit.bindings) <= bindings):
+                if (
+                    not unit.dead
+                    and unit.id not in hidden
+                    and (not unit.bindings or set(unit.bindings) <= bindings)
+                ):
                     return True
         if not self._units:
             return False
@@ -157,14 +163,15 @@ class SubsumptionIndex:
                 for unit in self._units.get(unit_key, ()):
                     if (
                         not unit.dead
+                        and unit.id not in hidden
                         and _match(unit.literals[0][1], atom, {})
                         and (not unit.bindings or set(unit.bindings) <= bindings)
                     ):
                         return True
         return False
 
-    def is_subsumed(self, d: PClause) -> bool:
-        if self.is_subsumed_by_unit(d):
+    def is_subsumed(self, d: PClause, hidden: AbstractSet[int] = frozenset()) -> bool:
+        if self.is_subsumed_by_unit(d, hidden):
             return True
         if len(d.literals) < 2:
             return False
@@ -172,7 +179,7 @@ class SubsumptionIndex:
         for key in d.keyset:
             for binding in bindings:
                 for c in self._by_first_key.get((*key, binding), ()):
-                    if not c.dead and subsumes(c, d):
+                    if not c.dead and c.id not in hidden and subsumes(c, d):
                         return True
         return False
 
