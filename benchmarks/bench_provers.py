@@ -31,7 +31,7 @@ from strips_framework.config import Config
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.planner import Planner
-from strips_framework.proving import GAVE_UP, ProofResult, ProofTask, TheoremProver
+from strips_framework.proving import GAVE_UP, ProofResult, ProofTask, TheoremProver, open_session
 from strips_framework.search.goal_prover import GoalProver
 from strips_resolution_prover import ResolutionProver
 
@@ -69,6 +69,7 @@ def recorded_tasks(name: str) -> list[ProofTask]:
     def record(self: GoalProver) -> None:
         original(self)
         self.prover = recorder
+        self.session = open_session(recorder, self.initial, self.problem.unique_names)
 
     GoalProver.__attrs_post_init__ = record
     try:

@@ -29,7 +29,16 @@ from strips_framework.formats.tptp import load_tptp, szs_status
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param
 from strips_framework.logic.unify import substitute
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
+from strips_framework.proving import (
+    GAVE_UP,
+    PROVED,
+    SATURATED,
+    Answer,
+    ProofResult,
+    ProofTask,
+    open_session,
+)
+from strips_framework.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 
 DEFAULT_EXAMPLES = 300
@@ -140,30 +149,37 @@ def test_resolution_and_z3_agree(task: ProofTask, incremental: bool) -> None:
 
 
 @st.composite
-def model_sequences(draw: st.DrawFn) -> list[ProofTask]:
-    """One model's tasks as a search asks them: the same axioms with facts deleted and
-    added between questions."""
+def model_sequences(draw: st.DrawFn) -> tuple[InitialModel, list[tuple[WorldModel, ProofTask]]]:
+    """One M0 and the models a search asks about: facts of M0 deleted and atoms added
+    between questions, each with the fresh task over its visible clauses."""
     first = draw(tasks())
-    sequence = [first]
-    facts = [c for c in first.axioms if c.is_unit and c.literals[0][0]]
-    rules = [c for c in first.axioms if c not in facts]
+    initial = InitialModel(first.axioms)
+    root = WorldModel(initial)
+    sequence = [(root, first)]
+    facts = [c.literals[0][1] for c in first.axioms if c.is_unit and c.literals[0][0]]
     for _ in range(draw(st.integers(1, 4))):
-        kept = [c for c in facts if draw(st.booleans())]
-        added = [
-            Clause([(True, _atom(draw, st.sampled_from(CONSTANTS)))])
-            for _ in range(draw(st.integers(0, 2)))
-        ]
+        deleted = frozenset(atom for atom in facts if draw(st.booleans()))
+        added = frozenset(
+            _atom(draw, st.sampled_from(CONSTANTS)) for _ in range(draw(st.integers(0, 2)))
+        )
+        model = root.changed(deleted, added)
         goal = draw(tasks()).negated_goal
-        sequence.append(ProofTask([*kept, *rules, *added], goal, effort=EFFORT))
-    return sequence
+        task = ProofTask(model.clauses(), goal, effort=EFFORT, unique_names=first.unique_names)
+        sequence.append((model, task))
+    return initial, sequence
 
 
 @settings(DIFFERENTIAL, max_examples=max(EXAMPLES // 5, 10))
-@given(sequence=model_sequences())
-def test_incremental_session_answers_like_a_fresh_solver(sequence: list[ProofTask]) -> None:
-    session = Z3Prover(incremental=True)
-    for task in sequence:
-        assert session.prove(task).answers == Z3Prover(incremental=False).prove(task).answers
+@given(walk=model_sequences())
+def test_sessions_answer_like_fresh_tasks(
+    walk: tuple[InitialModel, list[tuple[WorldModel, ProofTask]]],
+) -> None:
+    initial, sequence = walk
+    for prover in (RESOLUTION, Z3Prover(incremental=True)):
+        session = open_session(prover, initial, sequence[0][1].unique_names)
+        for model, task in sequence:
+            by_session = session.prove(model, task.negated_goal, task.effort, task.max_answers)
+            assert by_session.answers == prover.prove(task).answers, (prover.name, task)
 
 
 def test_report_differential_counts() -> None:

@@ -17,9 +17,13 @@ PUSH = OperatorSchema(
 EMPTY = WorldModel(InitialModel([]))
 
 
+def _relevant(difference, operators, model):
+    return AddListRelevance().for_problem(operators, model.initial).relevant(difference, model)
+
+
 def test_papers_example_two_instances_of_goto():
     difference = Difference([Clause([(False, ("ATR", "a")), (False, ("ATR", "b"))])])
-    found = AddListRelevance().relevant(difference, [GOTO, PUSH], EMPTY)
+    found = _relevant(difference, [GOTO, PUSH], EMPTY)
     names = sorted(str(r.operator) for r in found)
     assert names == ["goto(m, a)", "goto(m, b)", "push(k, m, a)", "push(k, m, b)"]
     by_name = {str(r.operator): str(r.resolvent) for r in found}
@@ -31,7 +35,7 @@ def test_smaller_resolvents_rank_first_and_unbindable_instances_are_dropped():
         Clause([(False, ("AT", "BOX1", 0)), (False, ("AT", "BOX2", 0))]),
         Clause([(False, ("AT", "BOX2", "b"))]),
     ])
-    found = AddListRelevance().relevant(difference, [PUSH], EMPTY)
+    found = _relevant(difference, [PUSH], EMPTY)
     # push(BOX1, m, x) would leave n unbound (it is not in the precondition): dropped.
     assert [str(r.operator) for r in found] == ["push(BOX2, m, b)"]
     assert found[0].resolvent.literals == ()
@@ -40,7 +44,7 @@ def test_smaller_resolvents_rank_first_and_unbindable_instances_are_dropped():
 def test_instance_bound_to_another_operators_parameter_is_dropped():
     goal_param = Param("m")
     difference = Difference([Clause([(False, ("ATR", goal_param))])])
-    assert AddListRelevance().relevant(difference, [GOTO], EMPTY) == []
+    assert _relevant(difference, [GOTO], EMPTY) == []
 
 
 def test_instances_that_would_undo_what_the_proof_rests_on_rank_last():
@@ -53,7 +57,7 @@ def test_instances_that_would_undo_what_the_proof_rests_on_rank_last():
     goal = Clause([(False, ("NEXTTO", "BOX1", "BOX2")), (False, ("NEXTTO", "BOX2", "BOX3"))])
     difference = Difference([Clause([(False, ("NEXTTO", "BOX2", "BOX3"))])], [goal])
     model = WorldModel(InitialModel([Clause([(True, ("NEXTTO", "BOX1", "BOX2"))])]))
-    found = AddListRelevance().relevant(difference, [pushto], model)
+    found = _relevant(difference, [pushto], model)
     assert [str(r.operator) for r in found] == ["pushto(BOX3, BOX2)", "pushto(BOX2, BOX3)"]
 
 
@@ -67,5 +71,5 @@ def test_instances_needing_a_rigid_fact_that_does_not_hold_are_dropped():
     difference = Difference([
         Clause([(False, ("NEXTTO", "BOX1", "a"))]), Clause([(False, ("NEXTTO", "ROBOT", "a"))]),
     ])
-    found = AddListRelevance().relevant(difference, [pushto], model)
+    found = _relevant(difference, [pushto], model)
     assert [str(r.operator) for r in found] == ["pushto(BOX1, a)"]

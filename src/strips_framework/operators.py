@@ -67,7 +67,10 @@ class OperatorInstance:
             raise ValueError(f"cannot apply {self}: parameters are unbound")
         delete_patterns, adds = self.effects()
         deleted = frozenset(
-            fact for fact in model.facts() if any(may_delete(p, fact) for p in delete_patterns)
+            fact
+            for pattern in delete_patterns
+            for fact in model.facts_matching(pattern)
+            if may_delete(pattern, fact)
         )
         return model.changed(deleted, frozenset(adds))
 

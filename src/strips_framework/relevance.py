@@ -29,7 +29,7 @@ from strips_framework.logic.unify import substitute, unify
 from strips_framework.operators import OperatorInstance, may_delete
 from strips_framework.problem import OperatorSchema
 from strips_framework.search.node import Difference, RelevantInstance
-from strips_framework.world import WorldModel
+from strips_framework.world import InitialModel, WorldModel
 
 #: Schema parameters are renamed to this tag while unifying, so they never meet the goal's
 #: own parameters (which carry tag 0: preconditions are built from the schemata).
@@ -52,21 +52,33 @@ class AddListRelevance:
     name: ClassVar[str] = "add-list"
     capabilities: ClassVar[frozenset[str]] = frozenset()
 
-    def relevant(
-        self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel
-    ) -> list[RelevantInstance]:
-        by_predicate = _add_atoms_by_predicate(operators)
+    def for_problem(
+        self, operators: Sequence[OperatorSchema], initial: InitialModel
+    ) -> AddListIndex:
+        """The add-list index and rigid predicates of one problem, built once."""
+        return AddListIndex(_add_atoms_by_predicate(operators), _rigid_predicates(operators, initial))
+
+
+@frozen
+class AddListIndex:
+    """:class:`AddListRelevance` for one problem: candidates by the predicate they add,
+    and the rigid predicates of its M0 (only deleted, never added or concluded, so a
+    model's rigid facts are M0's less its deletions)."""
+
+    by_predicate: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]
+    rigid: frozenset[tuple[str, int]]
+
+    def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         protected = _protected_facts(difference, model)
-        rigid = _rigid_predicates(operators, model)
         ranked: dict[OperatorInstance, tuple[tuple[int, int, int], RelevantInstance]] = {}
         order = 0
         for clause in difference.clauses:
             for position, (positive, atom) in enumerate(clause.literals):
                 if positive:
                     continue
-                for schema, renamed, add_atom in by_predicate.get((atom[0], len(atom)), ()):
+                for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
                     found = _resolve(schema, renamed, add_atom, clause, position)
-                    if found is None or _never_applicable(found.operator, rigid, model):
+                    if found is None or _never_applicable(found.operator, self.rigid, model):
                         continue
                     harm = _deleted_count(found.operator, protected)
                     key = (len(found.resolvent.literals), harm, order)
@@ -122,23 +134,23 @@ def _resolve(
 
 
 def _rigid_predicates(
-    operators: Sequence[OperatorSchema], model: WorldModel
-) -> set[tuple[str, int]]:
-    """Predicates that no operator adds and no non-unit clause of the model concludes."""
+    operators: Sequence[OperatorSchema], initial: InitialModel
+) -> frozenset[tuple[str, int]]:
+    """Predicates of M0's facts that no operator adds and no non-unit clause concludes."""
     concluded = {
         (atom[0], len(atom) - 1)
-        for clause in model.clauses()
+        for clause in initial.clauses
         if not clause.is_unit
         for positive, atom in clause.literals
         if positive
     }
     added = {(atom[0], len(atom) - 1) for schema in operators for atom in schema.add_list}
-    facts = {(atom[0], len(atom) - 1) for atom in model.facts()}
-    return facts - added - concluded
+    facts = {(atom[0], len(atom) - 1) for atom in initial.facts}
+    return frozenset(facts - added - concluded)
 
 
 def _never_applicable(
-    instance: OperatorInstance, rigid: set[tuple[str, int]], model: WorldModel
+    instance: OperatorInstance, rigid: frozenset[tuple[str, int]], model: WorldModel
 ) -> bool:
     precondition = instance.schema.precondition
     conjuncts = precondition.parts if isinstance(precondition, And) else (precondition,)
@@ -151,23 +163,24 @@ def _never_applicable(
     return False
 
 
-def _protected_facts(difference: Difference, model: WorldModel) -> list[Atom]:
+def _protected_facts(difference: Difference, model: WorldModel) -> set[Atom]:
     """Facts of ``model`` that could resolve away a literal of the difference: the facts
-    the proof rests on or could rest on."""
+    the proof rests on or could rest on (found through the model's fact index)."""
     wanted = {
         atom
         for clause in (*difference.negated_goal, *difference.clauses)
         for positive, atom in clause.literals
         if not positive
     }
-    return [
+    return {
         fact
-        for fact in model.facts()
-        if any(atom[0] == fact[0] and unify(atom, fact, {}) is not None for atom in wanted)
-    ]
+        for atom in wanted
+        for fact in model.facts_matching(atom)
+        if unify(atom, fact, {}) is not None
+    }
 
 
-def _deleted_count(instance: OperatorInstance, facts: list[Atom]) -> int:
+def _deleted_count(instance: OperatorInstance, facts: set[Atom]) -> int:
     """How many of ``facts`` the instance's delete list may delete (unbound parameters and
     wildcards match anything)."""
     patterns, _ = instance.effects()

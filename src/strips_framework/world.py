@@ -15,7 +15,11 @@ from attrs import field, frozen
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
 from strips_framework.logic.terms import Atom
-from strips_framework.problem import Problem
+from strips_framework.problem import WILDCARD, Problem
+
+#: Where facts are filed: ``(predicate, arity)``, or that and an argument ``position`` with
+#: the constant (or ``(functor, arity)``) found there.
+_FactKey = tuple[str, int] | tuple[str, int, int, object]
 
 
 @frozen(eq=False)
@@ -25,13 +29,15 @@ class InitialModel:
     ``facts`` maps each ground unit fact of M0 to its index in ``clauses``, so operators
     can find what to delete without scanning; ``dependents`` maps a clause index to the
     derived clauses resting on it, so a model's hidden clauses are found from its
-    deletions alone (:meth:`WorldModel.hidden`).
+    deletions alone (:meth:`WorldModel.hidden`). ``_filed`` files the facts by predicate
+    and by each argument, for :meth:`WorldModel.facts_matching`.
     """
 
     clauses: tuple[Clause, ...] = field(converter=tuple)
     supports: dict[int, frozenset[int]] = field(factory=dict)
     facts: dict[Atom, int] = field(init=False)
     dependents: dict[int, tuple[int, ...]] = field(init=False)
+    _filed: dict[_FactKey, list[Atom]] = field(init=False, repr=False)
 
     def __attrs_post_init__(self) -> None:
         facts = {
@@ -45,6 +51,33 @@ class InitialModel:
             for index in rests_on:
                 dependents.setdefault(index, []).append(derived)
         object.__setattr__(self, "dependents", {i: tuple(d) for i, d in dependents.items()})
+        filed: dict[_FactKey, list[Atom]] = {}
+        for atom in facts:
+            predicate, arity = atom[0], len(atom) - 1
+            filed.setdefault((predicate, arity), []).append(atom)
+            for position, arg in enumerate(atom[1:]):
+                symbol = (arg[0], len(arg)) if type(arg) is tuple else arg
+                filed.setdefault((predicate, arity, position, symbol), []).append(atom)
+        object.__setattr__(self, "_filed", filed)
+
+    def candidates(self, pattern: Atom) -> list[Atom]:
+        """M0's facts with ``pattern``'s predicate and its constant at the most selective
+        argument position where it has one (variables, parameters and ``$`` match
+        anything): a superset of the facts that match, found without scanning M0."""
+        predicate, arity = pattern[0], len(pattern) - 1
+        best = self._filed.get((predicate, arity), [])
+        for position, arg in enumerate(pattern[1:]):
+            kind = type(arg)
+            if kind is str and arg != WILDCARD:
+                symbol: object = arg
+            elif kind is tuple:
+                symbol = (arg[0], len(arg))
+            else:
+                continue
+            bucket = self._filed.get((predicate, arity, position, symbol), [])
+            if len(bucket) < len(best):
+                best = bucket
+        return best
 
 
 @frozen(cache_hash=True)
@@ -95,6 +128,20 @@ class WorldModel:
             if index not in self.deletions:
                 yield atom
         yield from self.additions
+
+    def facts_matching(self, pattern: Atom) -> Iterator[Atom]:
+        """The facts present that may match ``pattern`` (see
+        :meth:`InitialModel.candidates`); callers apply their own exact test. Costs time
+        in the candidates and the additions, not in |M0|."""
+        index = self.initial.facts
+        deleted = self.deletions
+        for atom in self.initial.candidates(pattern):
+            if index[atom] not in deleted:
+                yield atom
+        predicate, size = pattern[0], len(pattern)
+        for atom in self.additions:
+            if atom[0] == predicate and len(atom) == size:
+                yield atom
 
     def changed(self, deleted: frozenset[Atom], added: frozenset[Atom]) -> WorldModel:
         """The model after deleting then adding ground atoms (III.D)."""

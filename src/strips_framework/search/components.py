@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from strips_framework.search.limits import Limits
     from strips_framework.search.node import Difference, Node, RelevantInstance
     from strips_framework.search.result import SearchResult
-    from strips_framework.world import WorldModel
+    from strips_framework.world import InitialModel, WorldModel
 
 
 class DifferenceExtractor(Protocol):
@@ -31,9 +31,17 @@ class DifferenceExtractor(Protocol):
 class RelevanceFilter(Protocol):
     name: ClassVar[str]
 
-    def relevant(
-        self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel
-    ) -> list[RelevantInstance]:
+    def for_problem(
+        self, operators: Sequence[OperatorSchema], initial: InitialModel
+    ) -> ProblemRelevance:
+        """Index one problem's operators and M0, once per search."""
+        ...
+
+
+class ProblemRelevance(Protocol):
+    """A relevance filter prepared for one problem (:meth:`RelevanceFilter.for_problem`)."""
+
+    def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         """Relevant operator instances for ``difference`` in ``model``, best first."""
         ...
 

@@ -36,10 +36,9 @@ class MeansEndsRun:
         limits: Limits,
     ) -> None:
         self.max_goals = max_goals
-        self.operators = problem.operators
         self.goal_prover = goal_prover
         self.differences = differences
-        self.relevance = relevance
+        self.relevance = relevance.for_problem(problem.operators, goal_prover.initial)
         self.evaluator = evaluator
         self.tree = SearchTree(limits, goal_prover)
         self.queue: list[tuple[float, int, Node]] = []
@@ -110,7 +109,7 @@ class MeansEndsRun:
         on_goal_list = {goal.operator for goal in node.goals}
         node.pending = [
             found
-            for found in self.relevance.relevant(node.difference, self.operators, node.model)
+            for found in self.relevance.relevant(node.difference, node.model)
             if found.operator not in on_goal_list
         ]
         if node.pending:

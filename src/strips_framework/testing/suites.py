@@ -55,6 +55,10 @@ from strips_framework.testing.prover_checks import (
     check_refuses_unsupported,
     check_uncompleted_proof,
 )
+from strips_framework.testing.session_checks import (
+    check_session_agrees_with_fresh_tasks,
+    check_session_hides_and_revives_derived_clauses,
+)
 from strips_framework.testing.search_checks import (
     PROBLEMS,
     check_admissible,
@@ -101,6 +105,9 @@ class ProverConformance(_Conformance):
     kind = "prover"
     slot = "prover_class"
     prover_class: ClassVar[type]
+    #: Models per random walk of the session check (two walks); a slow prover's own
+    #: suite may take fewer.
+    session_steps: ClassVar[int] = 40
 
     @pytest.fixture
     def prover(self) -> TheoremProver:
@@ -123,6 +130,15 @@ class ProverConformance(_Conformance):
 
     def test_refuses_what_it_does_not_support(self, prover: TheoremProver) -> None:
         check_refuses_unsupported(prover, self.capabilities())
+
+    @pytest.mark.parametrize("seed", range(2))
+    def test_session_answers_like_fresh_tasks(self, prover: TheoremProver, seed: int) -> None:
+        check_session_agrees_with_fresh_tasks(
+            prover, self.capabilities(), seed, self.session_steps
+        )
+
+    def test_session_hides_and_revives_derived_clauses(self, prover: TheoremProver) -> None:
+        check_session_hides_and_revives_derived_clauses(prover)
 
 
 def _planner(

@@ -10,6 +10,7 @@ incrementally (:mod:`strips_z3_prover.ground`); others go to Z3 with quantifiers
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import ClassVar
 
 from attrs import define, field
@@ -25,6 +26,7 @@ from strips_framework.capabilities import (
 )
 from strips_framework.logic.clauses import Clause
 from strips_framework.proving import PROVED, ProofResult, ProofTask
+from strips_framework.world import InitialModel, WorldModel
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.encoding import clause_params, has_functions, task_terms
 from strips_z3_prover.ground import prove_ground
@@ -42,10 +44,11 @@ class Z3Prover:
     ``effort * rlimit_per_effort`` units of Z3's deterministic resource counter (the
     default gives the default effort of 300 the 3e5 units a robot-world task needs at
     most, grounding included, while effort 1 is too little for a pigeonhole
-    problem). ``incremental`` keeps one solver for all tasks, so the
-    shared part of successive world models is encoded once (see :mod:`.session`): a run
-    is then reproducible as a whole, while the effort one task uses depends on what the
-    session already holds (``false`` makes each task reproducible alone, and slower);
+    problem). ``incremental`` keeps one solver for all the world models of a session
+    (:meth:`open`), so the shared part of successive models is encoded once (see
+    :mod:`.session`): a search is then reproducible as a whole, while the effort one
+    attempt uses depends on what the session already holds (``false`` makes each attempt
+    reproducible alone, and slower; a one-off :meth:`prove` always starts afresh);
     ``max_ground_instances`` is the most ground instances one task may add before its
     attempt uses quantifiers instead; ``seed`` is Z3's random seed; ``max_residuals``
     bounds the uncompleted proof of a failed attempt.
@@ -61,37 +64,62 @@ class Z3Prover:
     max_ground_instances: int = field(default=200_000, validator=[instance_of(int), ge(0)])
     seed: int = field(default=0, validator=[instance_of(int), ge(0)])
     max_residuals: int = field(default=200, validator=[instance_of(int), ge(1)])
-    # The incremental solver: state that only speeds up later tasks, never changes answers.
-    _sessions: list[GroundSession] = field(init=False, factory=list, eq=False, repr=False)
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` for some parameter instance."""
-        budget = Budget(task.effort, self.rlimit_per_effort)
+        initial = InitialModel(task.axioms)
+        return self.open(initial, task.unique_names).prove(
+            WorldModel(initial), task.negated_goal, task.effort, task.max_answers
+        )
+
+    def open(self, initial: InitialModel, unique_names: bool) -> Z3Session:
+        """A session on M0: with ``incremental``, one solver for all its models."""
+        return Z3Session(self, unique_names)
+
+
+class Z3Session:
+    """The prover opened on one M0. With ``incremental`` it keeps one
+    :class:`~strips_z3_prover.session.GroundSession`, in which each clause of M0 is
+    asserted once and a model switches on its own clauses by selector; that solver state
+    only speeds up later attempts, never changes their answers."""
+
+    def __init__(self, options: Z3Prover, unique_names: bool) -> None:
+        self.options = options
+        self.unique_names = unique_names
+        self.ground = GroundSession(options.seed) if options.incremental else None
+
+    def prove(
+        self,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+    ) -> ProofResult:
+        """Refute the clauses visible in ``model`` ∪ ``negated_goal``."""
+        task = ProofTask(
+            tuple(model.clauses()), tuple(negated_goal), effort, max_answers, self.unique_names
+        )
+        options = self.options
+        budget = Budget(task.effort, options.rlimit_per_effort)
         params = sorted(set().union(*map(clause_params, task.negated_goal)))
         outcome = self._attempt(task, params, budget)
         if outcome.status == PROVED:
             return ProofResult(PROVED, answers=outcome.answers, effort_used=budget.effort_used())
         facts = (*task.axioms, *(Clause([(True, atom)]) for atom in outcome.lemmas))
-        uncompleted = uncompleted_proof(task.negated_goal, facts, self.max_residuals)
+        uncompleted = uncompleted_proof(task.negated_goal, facts, options.max_residuals)
         return ProofResult(
             outcome.status, uncompleted=uncompleted, effort_used=budget.effort_used()
         )
 
     def _attempt(self, task: ProofTask, params: list, budget: Budget) -> Outcome:
         clauses = (*task.axioms, *task.negated_goal)
+        seed = self.options.seed
         if has_functions(task) or any(clause_params(c) for c in task.axioms):
-            return prove_quantified(task, params, budget, self.seed)
+            return prove_quantified(task, params, budget, seed)
         constants = {t for t in task_terms(clauses) if type(t) is str} or {PLACEHOLDER}
-        session = self._session()
+        session = self.ground if self.ground is not None else GroundSession(seed)
         needed = session.instances_needed(clauses, constants)
-        if needed > self.max_ground_instances:
-            return prove_quantified(task, params, budget, self.seed)
+        if needed > self.options.max_ground_instances:
+            return prove_quantified(task, params, budget, seed)
         session.admit(constants)
         return prove_ground(session, task, params, budget)
-
-    def _session(self) -> GroundSession:
-        if not self.incremental:
-            return GroundSession(self.seed)
-        if not self._sessions:
-            self._sessions.append(GroundSession(self.seed))
-        return self._sessions[0]

@@ -1,0 +1,115 @@
+"""How STRIPS scales with the size of M0: the same robot task in worlds of 100 to 100,000
+formulas (:mod:`robot_worlds`), per size the load time, the prover session's opening
+(M0 imported and indexed once), proof attempts, time per attempt and memory.
+
+    .venv/bin/python benchmarks/bench_world_scale.py            # the table, up to 100,000
+    .venv/bin/python -m pytest benchmarks/bench_world_scale.py --benchmark-only
+
+The paper's claim (III.D) is that a proof costs the same at any |M0|, since every model
+is M0 plus short ADDITIONS and DELETIONS lists. The table's last line runs a 1,000-node
+search (the five-part goal of ``examples/robot-world/five-goals.strips``) on the largest
+world and compares peak memory with the memory after loading: M0 is shared, not copied.
+In the normal test run the smallest sizes run once, as a smoke test.
+"""
+
+from __future__ import annotations
+
+import resource
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from robot_worlds import robot_world
+
+from strips_framework.config import Config
+from strips_framework.planner import Planner
+from strips_framework.search.goal_prover import GoalProver
+
+SIZES = (100, 1_000, 10_000, 100_000)
+FIVE_GOALS = "NEXTTO(BOX1, BOX2) & NEXTTO(BOX3, BOX2) & STATUS(LIGHTSWITCH1, ON) & ONFLOOR & AT(ROBOT, f)"
+
+
+def _rss_mib() -> float:
+    """The resident set now (Linux), in MiB."""
+    with open("/proc/self/statm") as statm:
+        pages = int(statm.read().split()[1])
+    return pages * resource.getpagesize() / 2**20
+
+
+def _peak_mib() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def measure(size: int, folder: Path, goal: str = "boxes", nodes: int = 400) -> dict[str, float]:
+    """Load, open and solve the generated world of ``size`` formulas; the figures."""
+    path = folder / f"world-{size}-{goal}.strips"
+    text = robot_world(size, "boxes")
+    if goal == "five-goals":
+        text = text.replace("goal NEXTTO(BOX1, BOX2) & NEXTTO(BOX3, BOX2)", f"goal {FIVE_GOALS}")
+    path.write_text(text)
+    planner = Planner.create(Config.from_dict({"limits": {"nodes": nodes, "time": 600}}))
+    started = time.perf_counter()
+    problem = planner.load(path)
+    loaded = time.perf_counter()
+    opened: list[float] = []
+    original = GoalProver.__attrs_post_init__
+
+    def timed(self: GoalProver) -> None:
+        begin = time.perf_counter()
+        original(self)
+        opened.append(time.perf_counter() - begin)
+        measured["rss_after_load_mib"] = _rss_mib()
+
+    measured: dict[str, float] = {}
+    GoalProver.__attrs_post_init__ = timed  # type: ignore[method-assign]
+    try:
+        result = planner.solve(problem)
+    finally:
+        GoalProver.__attrs_post_init__ = original  # type: ignore[method-assign]
+    statistics = result.statistics
+    attempts = statistics.proof_attempts
+    measured.update(
+        formulas=len(problem.facts) + len(problem.axioms) + len(problem.derived),
+        load_s=loaded - started,
+        open_s=opened[0],
+        nodes=statistics.nodes,
+        attempts=attempts,
+        ms_per_attempt=1000 * statistics.proving_seconds / max(attempts, 1),
+        search_s=statistics.seconds,
+        peak_mib=_peak_mib(),
+        solved=float(result.solved),
+    )
+    return measured
+
+
+@pytest.mark.parametrize("size", SIZES[:2])
+def test_world_scale(benchmark, size: int, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    figures = benchmark.pedantic(measure, args=(size, tmp_path), rounds=1, iterations=1)
+    benchmark.extra_info.update(figures)
+    assert figures["solved"] and figures["nodes"] == 9  # the same search at every size
+
+
+def main() -> None:
+    import tempfile
+
+    folder = Path(tempfile.mkdtemp())
+    sizes = [int(arg) for arg in sys.argv[1:]] or list(SIZES)
+    print("formulas   load s   open s  nodes  attempts  ms/attempt  peak MiB")
+    for size in sizes:
+        f = measure(size, folder)
+        print(
+            f"{f['formulas']:8.0f} {f['load_s']:8.2f} {f['open_s']:8.2f} {f['nodes']:6.0f}"
+            f" {f['attempts']:9.0f} {f['ms_per_attempt']:11.3f} {f['peak_mib']:9.0f}"
+        )
+    f = measure(sizes[-1], folder, goal="five-goals", nodes=1000)
+    print(
+        f"five-part goal on {f['formulas']:.0f} formulas: {f['nodes']:.0f} nodes, "
+        f"{f['attempts']:.0f} attempts, {f['ms_per_attempt']:.3f} ms/attempt, "
+        f"memory after loading {f['rss_after_load_mib']:.0f} MiB, peak {f['peak_mib']:.0f} MiB "
+        f"({f['peak_mib'] / f['rss_after_load_mib']:.2f}x)"
+    )
+
+
+if __name__ == "__main__":
+    main()
