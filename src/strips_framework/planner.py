@@ -21,6 +21,7 @@ from attrs import frozen
 from strips_framework.capabilities import check_combination, check_problem
 from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
+from strips_framework.input_files import is_file
 from strips_framework.plugins import Registry
 
 if TYPE_CHECKING:
@@ -66,7 +67,7 @@ class Planner:
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
-        if not path.is_file():
+        if not is_file(path):
             raise InputError(str(path), None, None, "no such problem file")
         loader = self.registry.loader_for(path.suffix).cls()
         return loader.load(path)

@@ -113,6 +113,7 @@ def bench(args: argparse.Namespace) -> int:
 def _quick_matrix(args: argparse.Namespace) -> Matrix:
     from strips_framework.bench.matrix import Matrix
     from strips_framework.config import Config
+    from strips_framework.input_files import is_file
     from strips_framework.plugins import Registry
 
     """The matrix the quick form's options describe: its problems, the product of the
@@ -128,7 +129,7 @@ def _quick_matrix(args: argparse.Namespace) -> Matrix:
             product[kind] = [name.strip() for name in given.split(",") if name.strip()]
         else:
             product[kind] = registry.names(kind) if args.all else [base_config.choices[kind].name]
-    missing = [str(path) for path in args.targets if not path.is_file()]
+    missing = [str(path) for path in args.targets if not is_file(path)]
     if missing:
         raise ConfigError(f"no such problem file: {', '.join(missing)}")
     data = {

@@ -20,6 +20,7 @@ error is an :class:`~strips_framework.errors.InputError` naming ``file:line:colu
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from pathlib import Path
 from typing import ClassVar
@@ -27,6 +28,7 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_framework.errors import InputError
+from strips_framework.input_files import read_text
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of
@@ -74,9 +76,8 @@ class Block:
 
 def read_blocks(path: Path, shown: str, including: tuple[Path, ...] = ()) -> list[Block]:
     """The blocks of the file at ``path`` (called ``shown`` in messages), includes spliced."""
-    text = path.read_text(encoding="utf-8")
     blocks = []
-    for block in _split(text, shown):
+    for block in _split(read_text(path), shown):
         if block.keyword != "include":
             blocks.append(block)
             continue
@@ -85,13 +86,16 @@ def read_blocks(path: Path, shown: str, including: tuple[Path, ...] = ()) -> lis
         name = parser.expect("STRING", "a quoted file name")
         parser.end()
         target = path.parent / name.text[1:-1]
-        if target.resolve() in {p.resolve() for p in (*including, path)}:
-            raise parser.fail(name, f"including '{name.text[1:-1]}' here would make a cycle")
         try:
-            shown_target = str(Path(shown).parent / name.text[1:-1])
-            blocks += read_blocks(target, shown_target, (*including, path))
-        except (OSError, UnicodeDecodeError) as error:
+            cycle = target.resolve() in {p.resolve() for p in (*including, path)}
+            readable = target.is_file()
+        except (OSError, ValueError) as error:  # a name too long, a NUL byte in it
             raise parser.fail(name, f"cannot read the included file: {_reason(error)}") from None
+        if cycle:
+            raise parser.fail(name, f"including '{name.text[1:-1]}' here would make a cycle")
+        if not readable:
+            raise parser.fail(name, "cannot read the included file: No such file or directory")
+        blocks += read_blocks(target, str(Path(shown).parent / name.text[1:-1]), (*including, path))
     return blocks
 
 
@@ -240,8 +244,8 @@ class _Reader:
         while parser.peek.kind != "END":
             name = parser.expect("NAME", "a predicate name")
             parser.expect("SLASH", f"'/' and the arity after '{name.text}'")
-            if parser.peek.kind != "NAME" or not parser.peek.text.isdigit():
-                raise parser.error("an arity (a number)")
+            if parser.peek.kind != "NAME" or not re.fullmatch("[0-9]{1,6}", parser.peek.text):
+                raise parser.error("an arity (a number below 1000000)")
             arity = int(parser.next().text)
             if name.text in self.arities.fixed:
                 raise parser.fail(name, f"primitive predicate '{name.text}' is declared twice")
@@ -405,9 +409,4 @@ class NativeLoader:
     suffixes: ClassVar[tuple[str, ...]] = (".strips",)
 
     def load(self, path: Path) -> Problem:
-        try:
-            blocks = read_blocks(path, str(path))
-        except (OSError, UnicodeDecodeError) as error:
-            message = f"cannot read the file: {_reason(error)}"
-            raise InputError(str(path), 1, None, message) from None
-        return _Reader(str(path)).read(blocks)
+        return _Reader(str(path)).read(read_blocks(path, str(path)))

@@ -36,6 +36,7 @@ from collections.abc import Iterable, Mapping
 from attrs import define, field, frozen
 
 from strips_framework.errors import InputError
+from strips_framework.input_files import MAX_NESTING
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -173,6 +174,7 @@ class WffParser:
         self.arities, self.hint = arities, hint
         self._bound: list[str] = []  # quantified variables in scope, innermost last
         self._wildcard = False
+        self._depth = 0  # formulas, negations, implications and terms being read
 
     # --- cursor ---------------------------------------------------------------------
 
@@ -209,19 +211,30 @@ class WffParser:
     def fail(self, token: Token, message: str) -> InputError:
         return InputError(self.path, token.line, token.column, message)
 
+    def _descend(self) -> None:
+        """One level deeper (undone by ``self._depth -= 1``); refuse input nested deeper
+        than :data:`MAX_NESTING` at the token that goes too deep."""
+        self._depth += 1
+        if self._depth > MAX_NESTING:
+            raise self.fail(self.peek, f"formula nested deeper than {MAX_NESTING} levels")
+
     # --- formulas -------------------------------------------------------------------
 
     def formula(self) -> Formula:
         """``iff``: the loosest-binding level."""
+        self._descend()
         left = self._implies()
         if self.accept("IFF"):
-            return Iff(left, self.formula())
+            left = Iff(left, self.formula())
+        self._depth -= 1
         return left
 
     def _implies(self) -> Formula:
         left = self._or()
         if self.accept("IMPLIES"):
-            return Implies(left, self._implies())
+            self._descend()
+            left = Implies(left, self._implies())
+            self._depth -= 1
         return left
 
     def _or(self) -> Formula:
@@ -238,7 +251,10 @@ class WffParser:
 
     def _unary(self) -> Formula:
         if self.accept("NOT"):
-            return Not(self._unary())
+            self._descend()
+            negated = Not(self._unary())
+            self._depth -= 1
+            return negated
         if self.peek.kind in ("FORALL", "EXISTS"):
             return self._quantified()
         return self._primary()
@@ -320,12 +336,14 @@ class WffParser:
 
     def _arguments(self) -> tuple[Term | Var, ...]:
         self.expect("LPAREN", "'('")
+        self._descend()
         args = [self.term()]
         while self.accept("COMMA"):
             args.append(self.term())
         if self.peek.kind != "RPAREN":
             raise self.error("',' or ')'")
         self.next()
+        self._depth -= 1
         return tuple(args)
 
     def _as_term(self, token: Token, args: tuple[Term | Var, ...] | None) -> Term | Var:

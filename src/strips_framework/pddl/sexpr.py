@@ -13,6 +13,7 @@ import re
 from bisect import bisect_right
 
 from strips_framework.errors import InputError
+from strips_framework.input_files import MAX_NESTING
 
 _TOKEN = re.compile(r";[^\n]*|[()]|[^\s();]+")
 
@@ -63,6 +64,8 @@ class Source:
                 else:
                     top = node
                 stack.append(node)
+                if len(stack) > MAX_NESTING:
+                    raise self.error(node, f"lists nested deeper than {MAX_NESTING} levels")
             elif token == ")":
                 if not stack:
                     raise self.error(match.start(), "unbalanced ')'")
