@@ -21,7 +21,7 @@ from strips_framework.errors import InputError
 #: planning input comes near this depth.
 MAX_NESTING = 100
 
-_TOML_POSITION = re.compile(r"\s*\(at line (\d+), column (\d+)\)$")
+_TOML_POSITION = re.compile(r"\s*\(at (?:line (\d+), column (\d+)|end of document)\)$")
 _DIGITS = re.compile(r"[0-9][0-9_]*")
 
 
@@ -59,10 +59,10 @@ def read_toml(path: Path, what: str) -> dict[str, Any]:
     except tomllib.TOMLDecodeError as error:
         message = str(error)
         position = _TOML_POSITION.search(message)
-        if position is None:  # "(at end of document)" and the like: the last line
-            line, column = text.count("\n") + 1, None
-        else:
-            line, column = int(position.group(1)), int(position.group(2))
+        line, column = _position(text, len(text))  # "(at end of document)"
+        if position is not None:
+            if position.group(1):
+                line, column = int(position.group(1)), int(position.group(2))
             message = message[: position.start()]
         raise InputError(str(path), line, column, f"not valid TOML: {message}") from None
     except RecursionError:
