@@ -33,7 +33,7 @@ import attrs
 from attrs import frozen
 
 from strips_framework.errors import ConfigError
-from strips_framework.input_files import read_toml
+from strips_framework.user_files import read_toml
 from strips_framework.plugins import KINDS, Registration, Registry
 from strips_framework.search.limits import Limits
 

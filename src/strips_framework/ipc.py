@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import read_text
+from strips_framework.user_files import read_text
 
 
 def plan_text(steps: Sequence[str], cost: int, uses_costs: bool) -> str:

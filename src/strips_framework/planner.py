@@ -21,7 +21,7 @@ from attrs import frozen
 from strips_framework.capabilities import check_combination, check_problem
 from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
-from strips_framework.input_files import is_file
+from strips_framework.user_files import is_file
 from strips_framework.plugins import Registry
 
 if TYPE_CHECKING:

@@ -39,7 +39,7 @@ from strips_framework.bench.configs import (
 from strips_framework.bench.problems import ProblemFile, expand_problem_set
 from strips_framework.config import COMPONENTS, DEFAULT_CHOICES, Config
 from strips_framework.errors import ConfigError, InputError, StripsError
-from strips_framework.input_files import read_toml
+from strips_framework.user_files import read_toml
 from strips_framework.planner import Planner
 from strips_framework.plugins import Registry
 from strips_framework.search.limits import MAX_MEMORY, MAX_TIME

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import read_text
+from strips_framework.user_files import read_text
 
 
 def read_rows(path: Path) -> list[dict[str, Any]]:

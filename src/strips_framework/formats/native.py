@@ -28,7 +28,7 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import read_text
+from strips_framework.user_files import read_text
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of

@@ -22,7 +22,7 @@ from pathlib import Path
 from attrs import frozen
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import MAX_NESTING, read_text
+from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
 from strips_framework.logic.formulas import (

@@ -36,7 +36,7 @@ from collections.abc import Iterable, Mapping
 from attrs import define, field, frozen
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import MAX_NESTING
+from strips_framework.user_files import MAX_NESTING
 from strips_framework.logic.formulas import (
     And,
     Atomic,

@@ -6,7 +6,7 @@ import re
 from pathlib import Path
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import is_file
+from strips_framework.user_files import is_file
 from strips_framework.pddl.domain_file import read_domain
 from strips_framework.pddl.problem_file import read_problem
 from strips_framework.pddl.sexpr import Source

@@ -14,7 +14,7 @@ from bisect import bisect_right
 from collections.abc import Iterator
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import MAX_NESTING
+from strips_framework.user_files import MAX_NESTING
 
 _TOKEN = re.compile(r";[^\n]*|[()]|[^\s();]+")
 

@@ -1,13 +1,17 @@
-"""Reading the user's files: text that must be UTF-8, TOML, and the nesting depth every
-parser allows. Each failure is an :class:`~strips_framework.errors.InputError` naming the
-file and, where there is one, the line and column (a bad byte, a TOML syntax error, the
-parenthesis that nests too deep), never a traceback.
+"""Reading and writing the user's files: text that must be UTF-8, TOML, the nesting depth
+every parser allows, and result files written whole or not at all. Each failure is an
+:class:`~strips_framework.errors.InputError` naming the file and, where there is one, the
+line and column (a bad byte, a TOML syntax error, the parenthesis that nests too deep),
+never a traceback.
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
 import re
 import sys
+import tempfile
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -94,3 +98,37 @@ def _deepest_opening(text: str) -> tuple[int, int]:
         elif char in "]}":
             depth -= 1
     return 1, 1
+
+
+def check_writable(path: Path, what: str) -> None:
+    """Fail now, not after a long search, if ``path`` cannot be written: its folder is
+    missing or not a folder, or the path is a folder."""
+    folder = path.parent
+    try:
+        ok = folder.is_dir() and not path.is_dir() and os.access(folder, os.W_OK)
+    except (OSError, ValueError):
+        ok = False
+    if not ok:
+        reason = "is a folder" if _is_dir(path) else f"cannot write into {folder}"
+        raise InputError(str(path), None, None, f"cannot write {what}: {reason}")
+
+
+def _is_dir(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except (OSError, ValueError):
+        return False
+
+
+def write_atomically(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` through a temporary file in the same folder, renamed over
+    it: a reader (or an interrupted run) sees the old file or the new one, never half."""
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as file:
+            file.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(temporary)
+        raise

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from strips_framework.errors import InputError
-from strips_framework.input_files import MAX_NESTING, is_file, read_text, read_toml
+from strips_framework.user_files import MAX_NESTING, is_file, read_text, read_toml
 
 
 def error_of(path: Path) -> InputError:
