@@ -178,3 +178,20 @@ def test_native_plan_names_are_case_sensitive(tmp_path, capsys):
     plan.write_text("(GOTO a c)\n")
     assert main(["validate", str(THREE_BOXES), str(plan)]) == exit_codes.INVALID_PLAN
     assert "no operator 'GOTO'" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    ("table", "problem", "message"),
+    [
+        ('[heuristic]\nname = "fff"\n', [str(THREE_BOXES)], "'heuristic.name': state heuristic 'fff' is not registered"),
+        ("[heuristic]\nname = \"ff\"\ntypo = 1\n", [str(THREE_BOXES)], "unknown key 'heuristic.typo'"),
+        ('[evaluator]\nname = "papr"\n', PDDL, "'evaluator.name': evaluator 'papr' is not registered"),
+        ('[prover]\nname = "resolution"\nnope = 1\n', PDDL, "unknown key 'prover.nope'"),
+    ],
+)
+def test_the_config_is_checked_whole_not_only_the_parts_the_strategy_uses(tmp_path, capsys, table, problem, message):
+    config = tmp_path / "strips.toml"
+    config.write_text(table)
+    assert main(["solve", *problem, "--config", str(config)]) == exit_codes.INPUT_ERROR
+    err = capsys.readouterr().err
+    assert err.startswith(f"strips: error: {config}: ") and message in err

@@ -32,7 +32,7 @@ from typing import Any
 import attrs
 from attrs import frozen
 
-from strips_framework.errors import ConfigError
+from strips_framework.errors import ConfigError, PluginError
 from strips_framework.user_files import read_toml
 from strips_framework.plugins import KINDS, Registration, Registry
 from strips_framework.search.limits import Limits
@@ -116,7 +116,12 @@ class Config:
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""
         choice = self.choices[kind]
-        registration = registry.get(kind, choice.name)
+        try:
+            registration = registry.get(kind, choice.name)
+        except PluginError as error:
+            if kind not in self.chosen:
+                raise  # a default: no key of the config file to point at
+            raise PluginError(f"{self.source}: '{kind}.name': {error}") from None
         return _instantiate(registration.cls, choice.options, kind, self.source, registration)
 
 

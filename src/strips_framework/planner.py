@@ -43,11 +43,13 @@ class Planner:
 
     @classmethod
     def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
-        """A planner whose config is checked at once: every component the strategy uses is
-        registered, its options valid and the chosen implementations fit together (each has
-        the capabilities the others require), so mistakes show before any problem is read."""
+        """A planner whose config is checked at once and whole: every component the
+        strategy uses, and every one the config file names even if this strategy does not
+        use it (a ``[heuristic]`` typo is a typo with means-ends too), is registered with
+        valid options, and the implementations used fit together (each has the
+        capabilities the others require), so mistakes show before any problem is read."""
         planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
-        for kind in planner.kinds_used():
+        for kind in dict.fromkeys((*planner.kinds_used(), *sorted(planner.config.chosen))):
             planner.config.build(planner.registry, kind)
         check_combination(planner.registry, planner.config, planner.kinds_used())
         return planner

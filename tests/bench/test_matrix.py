@@ -64,7 +64,7 @@ def test_product_names_say_what_varies(write_matrix):
     (PROBLEMS + "[limits]\ntime = 'long'\n[configs.a]\n", "'limits.time': expected seconds > 0, got 'long'"),
     (PROBLEMS + "[limits]\nmemroy = 1\n[configs.a]\n", "'limits.memroy': unknown key"),
     (PROBLEMS + "[product]\nevaluator = ['paper', 'nope']\n",
-     "'product (nope)': evaluator 'nope' is not registered"),
+     "'product (nope)': 'evaluator.name': evaluator 'nope' is not registered"),
     (PROBLEMS + "[product]\nevaluatr = ['paper']\n", "'product.evaluatr': unknown key"),
     (PROBLEMS + "[product]\nevaluator = [3]\n", "'product.evaluator[0]': expected a name or a table"),
     (PROBLEMS + "[configs.a]\nevaluator = {name = 'paper', weight = 1}\n",
