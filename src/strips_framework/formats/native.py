@@ -312,6 +312,7 @@ class _Reader:
             return False
         atoms = []
         constants, fixed = self.constants, self.arities.fixed
+        first_use: dict[str, tuple[int, str]] = {}  # arities this line fixes
         for name, inside in _PLAIN_ATOM.findall(text):
             args = [arg.strip() for arg in inside.split(",")] if inside else []
             if name in _WORDS:
@@ -320,13 +321,15 @@ class _Reader:
                 if arg not in constants or arg in _WORDS:
                     return False
             known = fixed.get(name)
-            if known is not None and known[0] != len(args):
+            if known is None:
+                known = first_use[name] = first_use.get(name, (len(args), ""))
+            if known[0] != len(args):
                 return False
             atoms.append((name, *args))
         where = f"{entry.path}:{entry.line}"
+        for name, (arity, _) in first_use.items():
+            self.arities.fix(name, arity, f"as first used at {where}")
         for atom in atoms:
-            if atom[0] not in self.arities.fixed:
-                self.arities.fix(atom[0], len(atom) - 1, f"as first used at {where}")
             self.facts[atom] = None
         return True
 
