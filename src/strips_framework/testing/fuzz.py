@@ -25,6 +25,7 @@ import re
 import shutil
 import signal
 import traceback
+import warnings
 from collections import Counter
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
@@ -49,7 +50,7 @@ KNOWN_EXIT_CODES = frozenset({0, 1, 2, 11, 12, 22, 23, 130})
 INPUT_ERROR = 2
 
 #: Limits for solving mutated problems: enough for the examples, short for the rest.
-FUZZ_LIMITS = "[limits]\ntime = 5\nnodes = 300\nexpansions = 5000\neffort = 100\n"
+FUZZ_LIMITS = "[limits]\ntime = 5\nnodes = 100\nexpansions = 2000\neffort = 100\n"
 
 #: TPTP problems to mutate when no others are given (the repository ships none).
 TPTP_SEEDS = {
@@ -123,16 +124,10 @@ class Outcome:
         """Exit 2 with exactly one ``error:`` line."""
         return self.exit_code == INPUT_ERROR and len(self.error_lines) == 1
 
-    @property
-    def names_file(self) -> bool:
-        return self.file is not None and any(self.file in line for line in self.error_lines)
-
-    @property
-    def names_line(self) -> bool:
-        if self.file is None:
-            return False
-        pattern = re.compile(re.escape(self.file) + r":\d+")
-        return any(pattern.search(line) for line in self.error_lines)
+    #: The error names the file it is about (the mutated one, or one it includes or
+    #: refers to), and a line in it.
+    names_file: bool = False
+    names_line: bool = False
 
 
 # --- mutations -------------------------------------------------------------------------
@@ -256,6 +251,15 @@ def mutate(rng: random.Random, data: bytes) -> bytes:
 # --- running ---------------------------------------------------------------------------
 
 
+def _to(stream: io.StringIO) -> Callable[..., None]:
+    """Warnings as the installed command shows them (pytest would collect them)."""
+
+    def show(message: Warning | str, *_: object, **__: object) -> None:
+        stream.write(f"strips: warning: {message}\n")
+
+    return show
+
+
 def _on_guard(signum: int, frame: FrameType | None) -> None:
     raise Hang
 
@@ -271,7 +275,10 @@ def run_cli(argv: Sequence[str], cpu_seconds: float) -> tuple[int | None, str, s
     escaped: str | None = None
     hung = False
     try:
-        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr), \
+                warnings.catch_warnings():
+            warnings.simplefilter("always")
+            warnings.showwarning = _to(stderr)
             try:
                 code = main(list(argv))
             except SystemExit as exit_:  # argparse: --help, usage errors
@@ -328,7 +335,13 @@ class Workspace:
                  str(problem.with_suffix(".plan"))], 60)
 
     def native_problems(self) -> list[Path]:
-        return sorted(self.examples.rglob("*.strips"))
+        return self.seeds("*.strips")
+
+    def seeds(self, pattern: str, folder: str = "") -> list[Path]:
+        """The files to mutate: the copies of the examples (and the plans solved from
+        them), never an earlier input's mutant (``fuzz*``)."""
+        found = (self.examples / folder).rglob(pattern)
+        return sorted(path for path in found if not path.name.startswith("fuzz"))
 
     def pddl(self) -> tuple[Path, Path]:
         folder = self.examples / "pddl" / "blocksworld"
@@ -370,13 +383,13 @@ def _case(space: Workspace, fmt: str, number: int) -> Case:
         target, data = _mutant(space, rng, seed, "fuzz")
         return Case(label, ("solve", rel(target), "--config", limits), target, data)
     if fmt == "config":
-        seed = rng.choice(sorted((space.examples / "configs").glob("*.toml")))
+        seed = rng.choice(space.seeds("*.toml", "configs"))
         target, data = _mutant(space, rng, seed, "fuzz")
         pddl = b"pddl" in seed.read_bytes() or seed.stem == "fast"
         task = (rel(domain), rel(problem)) if pddl else (rel(space.examples / "three-boxes.strips"),)
         return Case(label, ("solve", *task, "--config", rel(target)), target, data)
     if fmt == "matrix":
-        seed = rng.choice(sorted((space.examples / "bench").glob("*.toml")))
+        seed = rng.choice(space.seeds("*.toml", "bench"))
         target, data = _mutant(space, rng, seed, "fuzz")
         argv = ("bench", rel(target), "--max-runs", "0", "--no-progress", "-o", "fuzz.jsonl")
         return Case(label, argv, target, data)
@@ -385,8 +398,7 @@ def _case(space: Workspace, fmt: str, number: int) -> Case:
         target, data = _mutant(space, rng, seed, "fuzz")
         return Case(label, ("prove", rel(target), "--effort", "100"), target, data)
     if fmt == "plan":
-        plans = sorted(space.examples.rglob("*.plan"))
-        seed = rng.choice(plans)
+        seed = rng.choice(space.seeds("*.plan"))
         target, data = _mutant(space, rng, seed, "fuzz")
         task = (rel(domain), rel(problem)) if seed.stem == problem.stem else (
             rel(seed.with_suffix(".strips")),
@@ -444,7 +456,33 @@ def run_case(space: Workspace, case: Case, cpu_seconds: float = 20.0) -> Outcome
         os.chdir(cwd)
     fmt = case.label.rsplit("-", 1)[0]
     file = space.relative(case.file) if case.file is not None else None
-    return Outcome(fmt, case.label, case.argv, code, stderr, escaped, hung, file)
+    named = [_named_file(space.root, line) for line in stderr.splitlines() if ": error:" in line]
+    names_file = file is not None and any(n is not None for n in named)
+    names_line = names_file and any(n is not None and n[1] for n in named)
+    return Outcome(fmt, case.label, case.argv, code, stderr, escaped, hung, file,
+                   names_file, names_line)
+
+
+_ERROR_AT = re.compile(r"strips: error: (?:(.+?):(\d+)(?::\d+)?|(.+?)): ")
+
+
+def _named_file(root: Path, line: str) -> tuple[str, bool] | None:
+    """The file an error line starts with, if it exists (relative to ``root``), and
+    whether a line number follows it."""
+    match = _ERROR_AT.match(line)
+    if match is None:
+        return None
+    for path, with_line in ((match.group(1), True), (match.group(3), False)):
+        if path is not None and _exists(root / path):
+            return path, with_line
+    return None
+
+
+def _exists(path: Path) -> bool:
+    try:
+        return path.exists()
+    except (OSError, ValueError):
+        return False
 
 
 def table(outcomes: Sequence[Outcome]) -> str:
