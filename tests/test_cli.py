@@ -103,4 +103,4 @@ def test_validate_replays_a_plan_file_in_the_simulator(tmp_path, capsys):
 def test_prove_names_a_missing_file(tmp_path, capsys):
     assert main(["prove", str(tmp_path / "none.p")]) == 2
     err = capsys.readouterr().err
-    assert err == f"strips: error: {tmp_path / 'none.p'}: cannot read: No such file or directory\n"
+    assert err == f"strips: error: {tmp_path / 'none.p'}: cannot read the file: No such file or directory\n"

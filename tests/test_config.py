@@ -59,7 +59,9 @@ def test_string_shorthand(tmp_path):
     ("[limits]\nnodes = -1\n", r"bad value for 'limits.nodes'"),
     ("[limits]\nspeed = 1\n", r"unknown key 'limits.speed'"),
     ("limits = 3\n", r"'limits' must be a table, got an integer"),
-    ("[strategy\n", r"not valid TOML"),
+    ("[limits]\ntime = 1e12\n", r"bad value for 'limits.time': 'time' must be <= 1000000000"),
+    ("[limits]\ntime = inf\n", r"bad value for 'limits.time'"),
+    ("[limits]\nmemory = 18446744073709551616\n", r"bad value for 'limits.memory'"),
 ])
 def test_errors_name_the_file_and_key_path(tmp_path, registry, text, message):
     path = write(tmp_path, text)

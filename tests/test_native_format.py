@@ -399,7 +399,7 @@ def with_lines(**replacements: str) -> str:
         pytest.param(
             with_lines(**{"ATR/1 AT/2": "ATR/1 AT/x"}),
             (3, 20),
-            "expected an arity (a number) but found 'x'",
+            "expected an arity (a number below 1000000) but found 'x'",
             id="bad-arity",
         ),
         pytest.param(

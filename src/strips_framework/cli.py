@@ -19,6 +19,7 @@ from strips_framework.planner import Planner, is_pddl
 from strips_framework.plugins import KINDS, Registration
 from strips_framework.search.forward.budget import LimitReached
 from strips_framework.search.forward.result import ForwardResult
+from strips_framework.user_files import check_writable, write_atomically
 
 if TYPE_CHECKING:
     from strips_framework.search.result import SearchResult
@@ -32,7 +33,7 @@ def _parser() -> argparse.ArgumentParser:
         "with state heuristics on PDDL tasks.",
         epilog="exit codes: 0 plan found, 1 invalid plan (validate), 2 bad input or config, "
         "11 unsolvable, 12 search ended without a plan (incomplete), 22 out of memory, "
-        "23 out of time",
+        "23 out of time, 32 a plugin raised an exception, 130 interrupted (Ctrl-C)",
     )
     commands = parser.add_subparsers(dest="command", required=True)
 
@@ -89,6 +90,7 @@ def _positive(text: str) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     warnings.formatwarning = lambda message, *_: f"strips: warning: {message}\n"
+    planner: Planner | None = None
     try:
         if argv[:2] == ["bench", "report"]:
             return bench_command.report(argv[2:])
@@ -111,6 +113,21 @@ def main(argv: Sequence[str] | None = None) -> int:
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
         return exit_codes.INPUT_ERROR
+    except KeyboardInterrupt:  # outside a search (a search reports its statistics)
+        print("strips: interrupted", file=sys.stderr)
+        return exit_codes.INTERRUPTED
+    except Exception as error:
+        culprit = planner.registry.raised_in(error) if planner is not None else None
+        if culprit is None:
+            raise  # a bug in the core: the traceback is what a bug report needs
+        registration, where = culprit
+        origin = registration.distribution or registration.plugin
+        print(
+            f"strips: error: {KINDS[registration.kind][1]} {registration.name!r} (plugin "
+            f"{origin}) raised {type(error).__name__}: {error} (at {where})",
+            file=sys.stderr,
+        )
+        return exit_codes.PLUGIN_ERROR
 
 
 def _domain_and_problem(files: list[Path], command: str, rest: int = 0) -> tuple[Path | None, Path]:
@@ -173,6 +190,9 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     from strips_framework.process_limits import enforced
 
     domain, problem = _domain_and_problem(args.files, "solve")
+    for path, what in ((args.plan_file, "the plan"), (args.tree, "the search tree")):
+        if path is not None:
+            check_writable(path, what)  # before the search, not after it
     try:
         with enforced(planner.config.limits):
             result = planner.run(problem, domain)
@@ -180,14 +200,16 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
         return _report_limit(args, limit.status)
     except MemoryError:
         return _report_limit(args, "memory-limit")
+    except KeyboardInterrupt:
+        return _report_limit(args, "interrupted")
     if isinstance(result, ForwardResult):
         return _report_forward(planner, args, problem, result)
     if args.tree:
         from strips_framework.tree_dot import search_tree_to_dot
 
-        args.tree.write_text(search_tree_to_dot(result, f"{problem.stem}: search tree"))
+        write_atomically(args.tree, search_tree_to_dot(result, f"{problem.stem}: search tree"))
     if args.plan_file and result.plan is not None:
-        args.plan_file.write_text(plan_text(_plan_lines(result), len(result.plan), False))
+        write_atomically(args.plan_file, plan_text(_plan_lines(result), len(result.plan), False))
     if args.json:
         payload = {
             "problem": problem.stem,
@@ -206,7 +228,7 @@ def _report_forward(
     planner: Planner, args: argparse.Namespace, problem: Path, result: ForwardResult
 ) -> int:
     if args.plan_file and result.plan is not None and result.cost is not None:
-        args.plan_file.write_text(plan_text(result.plan, result.cost, result.uses_costs))
+        write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs))
     code = exit_codes.for_status(result.status)
     if args.json:
         payload = {
@@ -227,14 +249,14 @@ def _report_forward(
 
 
 def _report_limit(args: argparse.Namespace, status: str) -> int:
-    """A limit hit before the search began (reading or grounding)."""
+    """A limit hit (or Ctrl-C) before the search began: while reading or grounding."""
     code = exit_codes.for_status(status)
     if args.json:
         print(
             json.dumps(
                 {
                     "status": status,
-                    "limit": status.removesuffix("-limit"),
+                    "limit": status.removesuffix("-limit") if status.endswith("-limit") else None,
                     "exit_code": code,
                     "plan": None,
                     "statistics": None,
@@ -259,7 +281,7 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
 
 def _validate(planner: Planner, args: argparse.Namespace) -> int:
     domain, problem = _domain_and_problem(args.files, "validate", rest=1)
-    steps = read_plan(args.files[-1])
+    steps = read_plan(args.files[-1], ipc_only=is_pddl(problem, domain))
     if is_pddl(problem, domain):
         from strips_framework.pddl.validate import validate_plan
 

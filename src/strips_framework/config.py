@@ -26,14 +26,14 @@ Mistakes are reported with their key path and what was expected.
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 from typing import Any
 
 import attrs
 from attrs import frozen
 
-from strips_framework.errors import ConfigError
+from strips_framework.errors import ConfigError, PluginError
+from strips_framework.user_files import read_toml
 from strips_framework.plugins import KINDS, Registration, Registry
 from strips_framework.search.limits import Limits
 
@@ -74,15 +74,7 @@ class Config:
 
     @classmethod
     def from_file(cls, path: Path) -> Config:
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as error:
-            raise ConfigError(f"{path}: cannot read config: {error.strerror}") from None
-        try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as error:
-            raise ConfigError(f"{path}: not valid TOML: {error}") from None
-        return cls.from_dict(data, str(path))
+        return cls.from_dict(read_toml(path, "the config"), str(path))
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], source: str = "<config>") -> Config:
@@ -124,7 +116,12 @@ class Config:
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""
         choice = self.choices[kind]
-        registration = registry.get(kind, choice.name)
+        try:
+            registration = registry.get(kind, choice.name)
+        except PluginError as error:
+            if kind not in self.chosen:
+                raise  # a default: no key of the config file to point at
+            raise PluginError(f"{self.source}: '{kind}.name': {error}") from None
         return _instantiate(registration.cls, choice.options, kind, self.source, registration)
 
 

@@ -9,6 +9,10 @@
      ``ehc`` or ``means-ends`` ran out of nodes, or a node or expansion limit was hit)
 22   out of memory (``[limits] memory``)
 23   out of time (``[limits] time``)
+32   a plugin raised an exception (a bug in it): the message names the implementation,
+     its distribution and where in its code (Fast Downward's "critical error")
+130  interrupted (Ctrl-C): the statistics so far are printed first (128 + SIGINT, as a
+     shell reports it)
 ===  ==========================================================================
 """
 
@@ -21,6 +25,8 @@ UNSOLVABLE = 11
 UNSOLVED_INCOMPLETE = 12
 OUT_OF_MEMORY = 22
 OUT_OF_TIME = 23
+PLUGIN_ERROR = 32
+INTERRUPTED = 130
 
 _BY_STATUS = {
     "solved": SOLVED,
@@ -31,6 +37,7 @@ _BY_STATUS = {
     "node-limit": UNSOLVED_INCOMPLETE,
     "memory-limit": OUT_OF_MEMORY,
     "time-limit": OUT_OF_TIME,
+    "interrupted": INTERRUPTED,
 }
 
 

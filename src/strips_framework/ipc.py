@@ -3,10 +3,12 @@ line giving the cost as Fast Downward writes it."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from pathlib import Path
 
 from strips_framework.errors import InputError
+from strips_framework.user_files import read_text
 
 
 def plan_text(steps: Sequence[str], cost: int, uses_costs: bool) -> str:
@@ -15,11 +17,36 @@ def plan_text(steps: Sequence[str], cost: int, uses_costs: bool) -> str:
     return "".join(f"{step}\n" for step in steps) + f"; cost = {cost} ({kind})\n"
 
 
-def read_plan(path: Path) -> list[str]:
-    """The steps of a plan file, comments and blank lines left out."""
-    try:
-        lines = path.read_text(encoding="utf-8").splitlines()
-    except OSError as error:
-        raise InputError(str(path), None, None, f"cannot read plan: {error.strerror}") from None
-    steps = (line.split(";")[0].strip() for line in lines)
-    return [step for step in steps if step]
+_FUNCTIONAL = re.compile(r"\s*([^\s(),]+)\s*(?:\(([^()]*)\))?\s*")
+_IPC = re.compile(r"\s*\(\s*([^\s()]+)((?:\s+[^\s()]+)*)\s*\)\s*")
+
+
+def split_step(text: str, *, ipc_only: bool = False) -> list[str] | None:
+    """``["name", "arg", ...]`` from ``(name arg ...)`` or (unless ``ipc_only``, as for
+    PDDL) the native ``name(arg, ...)``; ``None`` when the text is neither."""
+    ipc = _IPC.fullmatch(text)
+    if ipc:
+        return [ipc.group(1), *ipc.group(2).split()]
+    functional = None if ipc_only else _FUNCTIONAL.fullmatch(text)
+    if functional is None:
+        return None
+    inside = functional.group(2)
+    args = [] if inside is None or not inside.strip() else [a.strip() for a in inside.split(",")]
+    return None if "" in args else [functional.group(1), *args]
+
+
+def read_plan(path: Path, *, ipc_only: bool = False) -> list[str]:
+    """The steps of a plan file, comments and blank lines left out. A line that is not a
+    step (see :func:`split_step`) is bad input, reported at its line: whether a step
+    *applies* is the validator's question, whether the file is a plan is this one's."""
+    steps = []
+    for number, line in enumerate(read_text(path, "the plan").splitlines(), start=1):
+        step = line.split(";")[0].strip()
+        if not step:
+            continue
+        if split_step(step, ipc_only=ipc_only) is None:
+            column = line.index(step[0]) + 1
+            expected = "'(name arg ...)'" if ipc_only else "'(name arg ...)' or 'name(arg, ...)'"
+            raise InputError(str(path), number, column, f"expected a plan step {expected}")
+        steps.append(step)
+    return steps

@@ -21,6 +21,7 @@ from attrs import frozen
 from strips_framework.capabilities import check_combination, check_problem
 from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
+from strips_framework.user_files import is_file
 from strips_framework.plugins import Registry
 
 if TYPE_CHECKING:
@@ -42,11 +43,13 @@ class Planner:
 
     @classmethod
     def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
-        """A planner whose config is checked at once: every component the strategy uses is
-        registered, its options valid and the chosen implementations fit together (each has
-        the capabilities the others require), so mistakes show before any problem is read."""
+        """A planner whose config is checked at once and whole: every component the
+        strategy uses, and every one the config file names even if this strategy does not
+        use it (a ``[heuristic]`` typo is a typo with means-ends too), is registered with
+        valid options, and the implementations used fit together (each has the
+        capabilities the others require), so mistakes show before any problem is read."""
         planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
-        for kind in planner.kinds_used():
+        for kind in dict.fromkeys((*planner.kinds_used(), *sorted(planner.config.chosen))):
             planner.config.build(planner.registry, kind)
         check_combination(planner.registry, planner.config, planner.kinds_used())
         return planner
@@ -66,7 +69,7 @@ class Planner:
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
-        if not path.is_file():
+        if not is_file(path):
             raise InputError(str(path), None, None, "no such problem file")
         loader = self.registry.loader_for(path.suffix).cls()
         return loader.load(path)

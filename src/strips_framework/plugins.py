@@ -12,7 +12,10 @@ module that imports its classes inside its hooks costs nothing until then). Set
 from __future__ import annotations
 
 import importlib
+import importlib.metadata
 import os
+import traceback
+import warnings
 from collections.abc import Iterable
 
 import attrs
@@ -55,18 +58,52 @@ KNOWN_PROVIDERS = {
 AUTOLOAD_SWITCH = "STRIPS_DISABLE_PLUGIN_AUTOLOAD"
 
 
+class PluginManager(pluggy.PluginManager):
+    """pluggy's manager, plus the distribution each installed plugin came from."""
+
+    def __init__(self) -> None:
+        super().__init__(hookspecs.PROJECT)
+        self.add_hookspecs(hookspecs)
+        #: Plugin name -> the name of the distribution that installed it.
+        self.distributions: dict[str, str] = {}
+
+    def load_installed(self) -> None:
+        """Register every installed plugin (entry points in the group ``strips_framework``)
+        one at a time. A plugin that cannot be imported, or that implements a hook that
+        does not exist (a misspelling), is left out with a warning naming it and its
+        distribution: one broken third-party plugin must not disable every command,
+        ``strips plugins`` included."""
+        for dist in importlib.metadata.distributions():
+            for entry in dist.entry_points:
+                if entry.group != hookspecs.PROJECT or self.has_plugin(entry.name):
+                    continue
+                try:
+                    self.register(entry.load(), name=entry.name)
+                    self.check_pending()
+                except Exception as error:  # noqa: BLE001 - third-party code, any failure
+                    if self.has_plugin(entry.name):
+                        self.unregister(name=entry.name)
+                    warnings.warn(
+                        f"plugin {entry.name!r} (from {dist.metadata['Name']}) failed to load "
+                        f"and is left out: {type(error).__name__}: {error}",
+                        stacklevel=2,
+                    )
+                    continue
+                self.distributions[entry.name] = dist.metadata["Name"]
+
+
 def get_plugin_manager(
     extra_plugins: Iterable[object] = (), load_entrypoints: bool | None = None
-) -> pluggy.PluginManager:
-    """A new plugin manager with the builtins, installed plugins and ``extra_plugins``."""
-    manager = pluggy.PluginManager(hookspecs.PROJECT)
-    manager.add_hookspecs(hookspecs)
+) -> PluginManager:
+    """A new plugin manager with the builtins, installed plugins and ``extra_plugins``
+    (a mistake in ``extra_plugins``, the caller's own, is an error)."""
+    manager = PluginManager()
     for module_name in DEFAULT_PLUGINS:
         manager.register(importlib.import_module(module_name), name=module_name)
     if load_entrypoints is None:
         load_entrypoints = not os.environ.get(AUTOLOAD_SWITCH)
     if load_entrypoints:
-        manager.load_setuptools_entrypoints(hookspecs.PROJECT)
+        manager.load_installed()
     for plugin in extra_plugins:
         manager.register(plugin)
     manager.check_pending()
@@ -106,26 +143,30 @@ class Registry:
     """Implementation classes by kind and name, as the hooks registered them; each kind's
     hook is called the first time the kind is looked up."""
 
-    def __init__(self, manager: pluggy.PluginManager) -> None:
+    def __init__(self, manager: PluginManager) -> None:
         self._manager = manager
         self._by_kind: dict[str, dict[str, Registration]] = {}
-        self._distributions: dict[int, str] | None = None
 
     def _kind(self, kind: str) -> dict[str, Registration]:
-        """The registrations of ``kind``, collected from its hook on first use."""
+        """The registrations of ``kind``, collected from its hook on first use. A plugin
+        whose hook raises is left out of the kind with a warning naming it."""
         found = self._by_kind.get(kind)
         if found is not None:
             return found
-        if self._distributions is None:
-            self._distributions = {
-                id(plugin): dist.project_name
-                for plugin, dist in self._manager.list_plugin_distinfo()
-            }
         hook_name, words, _ = KINDS[kind]
         found = {}
         caller = getattr(self._manager.hook, hook_name)
         for impl in reversed(caller.get_hookimpls()):  # registration order
-            for cls in impl.function() or ():
+            try:
+                classes = list(impl.function() or ())
+            except Exception as error:  # noqa: BLE001 - third-party code, any failure
+                warnings.warn(
+                    f"plugin {impl.plugin_name!r} failed to register its {KINDS[kind][2]} "
+                    f"and is left out of them: {type(error).__name__}: {error}",
+                    stacklevel=2,
+                )
+                continue
+            for cls in classes:
                 name = getattr(cls, "name", None)
                 if not isinstance(name, str) or not name:
                     raise PluginError(
@@ -139,10 +180,34 @@ class Registry:
                         f"and by {impl.plugin_name!r}"
                     )
                 found[name] = Registration(
-                    kind, name, cls, impl.plugin_name, self._distributions.get(id(impl.plugin))
+                    kind, name, cls, impl.plugin_name,
+                    self._manager.distributions.get(impl.plugin_name),
                 )
         self._by_kind[kind] = found
         return found
+
+    def raised_in(self, error: BaseException) -> tuple[Registration, str] | None:
+        """The plugin implementation whose code raised ``error``, and where (``file:line``):
+        the innermost frame of the traceback that is a method of a registered class from
+        outside the core, or code in the module that defines one (a heuristic's estimator
+        beside its heuristic). ``None`` for errors in the core's own code."""
+        plugged = [
+            registration
+            for found in self._by_kind.values()
+            for registration in found.values()
+            if not registration.cls.__module__.startswith("strips_framework.")
+        ]
+        classes = {registration.cls: registration for registration in plugged}
+        modules = {registration.cls.__module__: registration for registration in plugged}
+        frames = list(traceback.walk_tb(error.__traceback__))
+        for frame, _ in reversed(frames):
+            registration = classes.get(type(frame.f_locals.get("self"))) or modules.get(
+                frame.f_globals.get("__name__", "")
+            )
+            if registration is not None:
+                innermost, line = frames[-1]
+                return registration, f"{innermost.f_code.co_filename}:{line}"
+        return None
 
     @classmethod
     def from_plugins(cls, extra_plugins: Iterable[object] = ()) -> Registry:

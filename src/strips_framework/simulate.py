@@ -29,14 +29,13 @@ simulator accepts may be one the planner could never have proved.
 from __future__ import annotations
 
 import itertools
-import re
 from collections import defaultdict
 from collections.abc import Iterator, Mapping, Sequence
-from typing import Generic, TypeVar
 
 from attrs import frozen
 
 from strips_framework.errors import StripsError
+from strips_framework.ipc import split_step
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -59,7 +58,6 @@ from strips_framework.problem import WILDCARD, OperatorSchema, Problem
 #: Values of quantified variables and schema parameters while a formula is evaluated.
 Env = Mapping[Var | Param, Term]
 State = frozenset[Atom]
-T = TypeVar("T")
 
 
 class SimulationError(StripsError):
@@ -97,8 +95,8 @@ def replay(problem: Problem, plan: Sequence[str]) -> Replay:
     """Execute ``plan`` from the problem's initial state and check the goal at the end.
 
     Steps are written ``name(arg, ...)`` or in IPC form ``(name arg ...)``; operator names
-    and constants are matched case-insensitively (IPC plans are lower case), an exact match
-    winning over others that differ only in case. Raises :class:`SimulationError` when the
+    and constants are matched exactly, as the native format is case-sensitive (``AT`` and
+    ``at`` are different predicates, ``BOX1`` and ``box1`` different constants). Raises :class:`SimulationError` when the
     problem has non-Horn axioms, or uses equality without unique names.
     """
     return Simulator(problem).run(plan)
@@ -115,8 +113,8 @@ class Simulator:
     def __init__(self, problem: Problem) -> None:
         self.problem = problem
         self.rules = [_horn_rule(number, axiom) for number, axiom in enumerate(problem.axioms, 1)]
-        self.operators = _NameTable({schema.name: schema for schema in problem.operators})
-        self.constants = _NameTable({constant: constant for constant in problem.constants})
+        self.operators = {schema.name: schema for schema in problem.operators}
+        self.constants = frozenset(problem.constants)
 
     def run(self, plan: Sequence[str]) -> Replay:
         state: State = frozenset(self.problem.facts)
@@ -147,14 +145,14 @@ class Simulator:
 
     def _parse(self, text: str) -> tuple[OperatorSchema, dict[Param, Term]] | str:
         """The schema and parameter binding a step names, or why it names none."""
-        words = _split_step(text)
+        words = split_step(text)
         if words is None:
             return "not a step: expected 'name(arg, ...)' or '(name arg ...)'"
         name, *args = words
-        schema = self.operators.find(name)
+        schema = self.operators.get(name)
         if schema is None:
             known = ", ".join(s.name for s in self.problem.operators)
-            return f"no operator {name!r} in the problem (operators: {known})"
+            return f"no operator {name!r} in the problem (operators: {known}; names are case-sensitive)"
         if len(args) != len(schema.parameters):
             return (
                 f"{schema.signature()} takes {len(schema.parameters)} argument(s), "
@@ -162,10 +160,9 @@ class Simulator:
             )
         values = []
         for arg in args:
-            constant = self.constants.find(arg)
-            if constant is None:
-                return f"{arg!r} is not a constant of the problem"
-            values.append(constant)
+            if arg not in self.constants:
+                return f"{arg!r} is not a constant of the problem (names are case-sensitive)"
+            values.append(arg)
         return schema, dict(zip(schema.parameters, values))
 
     def close(self, state: State) -> State:
@@ -227,40 +224,6 @@ class Simulator:
         )
         test = all if isinstance(formula, Forall) else any
         return test(self.holds(formula.body, inner, state) for inner in assignments)
-
-
-class _NameTable(Generic[T]):
-    """Exact lookup first, then case-insensitive when that is unambiguous."""
-
-    def __init__(self, items: dict[str, T]) -> None:
-        self.exact = items
-        folded: dict[str, list[str]] = defaultdict(list)
-        for name in items:
-            folded[name.lower()].append(name)
-        self.folded = {key: names[0] for key, names in folded.items() if len(names) == 1}
-
-    def find(self, name: str) -> T | None:
-        if name in self.exact:
-            return self.exact[name]
-        canonical = self.folded.get(name.lower())
-        return None if canonical is None else self.exact[canonical]
-
-
-_FUNCTIONAL = re.compile(r"\s*([^\s(),]+)\s*(?:\(([^()]*)\))?\s*")
-_IPC = re.compile(r"\s*\(\s*([^\s()]+)((?:\s+[^\s()]+)*)\s*\)\s*")
-
-
-def _split_step(text: str) -> list[str] | None:
-    """``["name", "arg", ...]`` from either step syntax, or ``None``."""
-    ipc = _IPC.fullmatch(text)
-    if ipc:
-        return [ipc.group(1), *ipc.group(2).split()]
-    functional = _FUNCTIONAL.fullmatch(text)
-    if functional is None:
-        return None
-    inside = functional.group(2)
-    args = [] if inside is None or not inside.strip() else [a.strip() for a in inside.split(",")]
-    return None if "" in args else [functional.group(1), *args]
 
 
 def _conjuncts(formula: Formula) -> Iterator[Formula]:

@@ -7,7 +7,7 @@ import pytest
 from strips_framework.bench.configs import AnchorConfig, CommandConfig, PlannerConfig
 from strips_framework.bench.matrix import Matrix
 from strips_framework.bench.problems import find_domain
-from strips_framework.errors import ConfigError
+from strips_framework.errors import ConfigError, InputError
 
 from .conftest import PUSH_ONE_BOX, THREE_BOXES, fake
 
@@ -60,16 +60,16 @@ def test_product_names_say_what_varies(write_matrix):
     ('[problems]\nx = ["nothing-*.strips"]\n[configs.a]\n',
      "'problems.x': the pattern 'nothing-*.strips' matches no problem file"),
     ('[problems]\nx = 3\n[configs.a]\n', "'problems.x': expected an array of glob patterns, got 3"),
-    ("repetitions = 0\n" + PROBLEMS + "[configs.a]\n", "'repetitions': expected an integer >= 1, got 0"),
+    ("repetitions = 0\n" + PROBLEMS + "[configs.a]\n", "'repetitions': expected an integer from 1 to 10000, got 0"),
     (PROBLEMS + "[limits]\ntime = 'long'\n[configs.a]\n", "'limits.time': expected seconds > 0, got 'long'"),
     (PROBLEMS + "[limits]\nmemroy = 1\n[configs.a]\n", "'limits.memroy': unknown key"),
     (PROBLEMS + "[product]\nevaluator = ['paper', 'nope']\n",
-     "'product (nope)': evaluator 'nope' is not registered"),
+     "'product (nope)': 'evaluator.name': evaluator 'nope' is not registered"),
     (PROBLEMS + "[product]\nevaluatr = ['paper']\n", "'product.evaluatr': unknown key"),
     (PROBLEMS + "[product]\nevaluator = [3]\n", "'product.evaluator[0]': expected a name or a table"),
     (PROBLEMS + "[configs.a]\nevaluator = {name = 'paper', weight = 1}\n",
      "'configs.a': unknown key 'evaluator.weight'"),
-    (PROBLEMS + "[configs.a]\nfile = 'missing.toml'\n", "'configs.a.file': cannot read the config"),
+    (PROBLEMS + "[configs.a]\nfile = 'missing.toml'\n", "missing.toml: cannot read the config"),
     (PROBLEMS + "[configs.a]\ncommand = ['x', '{problme}']\n",
      "'configs.a.command': bad placeholder in '{problme}'"),
     (PROBLEMS + "[configs.a]\ncommand = 'x'\n", "'configs.a.command': expected an array of strings"),
@@ -89,10 +89,26 @@ def test_mistakes_name_the_file_and_key_path(write_matrix, body, message):
 
 
 def test_bad_toml_and_missing_file_are_reported(write_matrix, tmp_path):
-    with pytest.raises(ConfigError, match=r"matrix.toml: not valid TOML"):
+    with pytest.raises(InputError, match=r"matrix.toml:1:10: not valid TOML: Expected ']'"):
         Matrix.from_file(write_matrix("[problems"))
-    with pytest.raises(ConfigError, match="cannot read matrix"):
+    with pytest.raises(InputError, match="none.toml: cannot read the matrix"):
         Matrix.from_file(tmp_path / "none.toml")
+    latin1 = tmp_path / "latin1.toml"
+    latin1.write_bytes(b"seed =\xff")
+    with pytest.raises(InputError, match=r"latin1.toml:1:7: the matrix is not UTF-8 text"):
+        Matrix.from_file(latin1)
+
+
+@pytest.mark.parametrize(("limits", "message"), [
+    ("[limits]\nmemory = 18446744073709551616\n", r"'limits.memory': expected MiB > 0 and <= "),
+    ("[limits]\ntime = 1e12\n", r"'limits.time': expected seconds > 0 and <= 1000000000"),
+    ("repetitions = 100000\n", r"'repetitions': expected an integer from 1 to 10000"),
+    ("seed = 4294967295\nrepetitions = 2\n", r"'seed': expected an integer from 0 to 4294967294"),
+])
+def test_limits_the_system_cannot_apply_are_refused_when_read(write_matrix, limits, message):
+    body = limits + "[problems]\nall = []\n[configs.a]\n"
+    with pytest.raises(ConfigError, match=message):
+        Matrix.from_file(write_matrix(body))
 
 
 def test_pddl_sets_skip_domain_files_and_find_each_problems_domain(write_matrix, tmp_path):

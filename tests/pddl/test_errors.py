@@ -164,3 +164,99 @@ def test_derived_predicates_cannot_be_effects(write_task):
         write_task(domain, PROBLEM)
     assert error.value.line == 5
     assert "changes 'p', a derived predicate" in error.value.message
+
+
+@pytest.mark.parametrize(
+    ("action", "message"),
+    [
+        ("(:action a :parameters (?x) :precondition (p ?x) :precondition (q ?x ?x)"
+         " :effect (p ?x))", ":precondition is given twice in action 'a'"),
+        ("(:action a :parameters (?x) :effect (p ?x) :effect (not (p ?x)))",
+         ":effect is given twice in action 'a'"),
+        ("(:action a :parameters (?x) :parameters (?y) :effect (p ?x))",
+         ":parameters is given twice"),
+    ],
+)
+def test_a_repeated_action_part_is_an_error_not_a_replacement(write_task, action, message):
+    with pytest.raises(InputError, match=message) as error:
+        write_task(domain_with(action), PROBLEM)
+    assert error.value.line == 4
+
+
+def test_a_second_goal_is_an_error_not_a_replacement(write_task):
+    domain = domain_with("(:action a :parameters (?x) :effect (p ?x))")
+    problem = "(define (problem p) (:domain d) (:objects a b) (:init (p a))\n (:goal (p b))\n (:goal (p a)))"
+    with pytest.raises(InputError, match=r"problem.pddl:3:2: \(:goal \.\.\.\) is given twice \(first at line 2\)"):
+        write_task(domain, problem)
+
+
+def test_a_repeated_requirements_section_is_an_error(write_task):
+    domain = domain_with("(:action a :parameters (?x) :effect (p ?x))", "\n  (:requirements :typing)")
+    with pytest.raises(InputError, match=r"domain.pddl:4:3: \(:requirements \.\.\.\) is given twice"):
+        write_task(domain, PROBLEM)
+
+
+TYPED = (
+    "(define (domain d)\n"
+    "  (:types vehicle - object truck - vehicle)\n"
+    "  (:predicates (at ?v - vehicle))\n"
+    "  (:action go :parameters (?v - {kind}) :effect (at ?v)))\n"
+)
+
+
+@pytest.mark.parametrize("kind", ["vann", "(either truck vann)"])
+def test_an_undeclared_type_is_an_error(write_task, kind):
+    problem = "(define (problem p) (:domain d) (:objects t - truck) (:init) (:goal (at t)))"
+    with pytest.raises(InputError, match=r"domain.pddl:4:\d+: undeclared type 'vann' \(declared types: object, truck, vehicle\)"):
+        write_task(TYPED.format(kind=kind), problem)
+
+
+def test_an_undeclared_object_type_is_an_error_in_the_problem(write_task):
+    problem = "(define (problem p) (:domain d)\n (:objects t - lorry) (:init) (:goal (at t)))"
+    with pytest.raises(InputError, match=r"problem.pddl:2:2: undeclared type 'lorry'"):
+        write_task(TYPED.format(kind="truck"), problem)
+
+
+def test_a_domain_name_mismatch_is_a_warning(write_task):
+    problem = "(define (problem p)\n (:domain other) (:objects t - truck) (:init) (:goal (at t)))"
+    with pytest.warns(UserWarning, match=r"problem.pddl:2:2: the problem names domain 'other', but the domain file defines 'd'"):
+        task = write_task(TYPED.format(kind="truck"), problem)
+    assert task.problem.domain_name == "other"
+
+
+BLOCKS = (
+    "(define (domain b)\n"                                          # 1
+    "  (:predicates (on ?x ?y) (clear ?x))\n"                       # 2
+    "  (:action stack\n"                                            # 3
+    "    :parameters (?x ?y)\n"                                     # 4
+    "    :precondition (and (clear ?x)\n"                           # 5
+    "                       (clear ?y))\n"                          # 6
+    "    :effect (and (on ?x ?y) (not (clear ?y))))\n"              # 7
+    "  (:action unstack\n"                                          # 8
+    "    :parameters (?x ?y)\n"                                     # 9
+    "    :precondition (on ?x ?y)\n"                                # 10
+    "    :effect (and (clear ?y) (not (on ?x ?y)))))\n"             # 11
+)
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "line", "message"),
+    [
+        ("(clear ?y))\n    :effect", "(clear ?y)\n    :effect", 5, "this '(' is not closed before line 7"),
+        ("(not (clear ?y))))", "(not (clear ?y)))", 3, "this '(' is not closed before line 8"),
+        ("(clear ?x)\n", "(clear ?x))\n", 5, "this ')' closes the '(' of line 5 too early"),
+    ],
+)
+def test_a_parenthesis_error_points_at_the_parenthesis_not_at_define(write_task, old, new, line, message):
+    assert old in BLOCKS
+    with pytest.raises(InputError) as error:
+        write_task(BLOCKS.replace(old, new), PROBLEM)
+    assert error.value.line == line
+    assert message in error.value.message
+
+
+def test_lists_nested_deeper_than_the_limit_are_refused_at_the_deep_parenthesis(write_task):
+    goal = "(not " * 200 + "(p a)" + ")" * 200
+    problem = f"(define (problem p) (:domain d) (:objects a)\n (:init) (:goal {goal}))"
+    with pytest.raises(InputError, match=r"problem.pddl:2:\d+: lists nested deeper than 100 levels"):
+        write_task(domain_with("(:action a :parameters (?x) :effect (p ?x))"), problem)

@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from strips_framework import exit_codes
 from strips_framework.errors import ConfigError, StripsError
 
 if TYPE_CHECKING:
@@ -20,7 +21,6 @@ if TYPE_CHECKING:
 # The runner, results and summary modules are imported inside the commands: `strips`
 # builds this parser on every start, and `strips solve` must not pay for them.
 
-INTERRUPTED = 130
 EXTRA_HINT = "pip install 'strips-framework[bench]'"
 
 
@@ -96,7 +96,7 @@ def bench(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         print(f"\ninterrupted: {len(sink.done) - before} runs written"
               + (f" to {output}; continue with --resume" if output else ""), file=sys.stderr)
-        return INTERRUPTED
+        return exit_codes.INTERRUPTED
     except ImportError as error:
         raise ConfigError(f"--scheduler needs dask.distributed ({error}): {EXTRA_HINT}") from None
     finally:
@@ -113,6 +113,7 @@ def bench(args: argparse.Namespace) -> int:
 def _quick_matrix(args: argparse.Namespace) -> Matrix:
     from strips_framework.bench.matrix import Matrix
     from strips_framework.config import Config
+    from strips_framework.user_files import is_file
     from strips_framework.plugins import Registry
 
     """The matrix the quick form's options describe: its problems, the product of the
@@ -128,7 +129,7 @@ def _quick_matrix(args: argparse.Namespace) -> Matrix:
             product[kind] = [name.strip() for name in given.split(",") if name.strip()]
         else:
             product[kind] = registry.names(kind) if args.all else [base_config.choices[kind].name]
-    missing = [str(path) for path in args.targets if not path.is_file()]
+    missing = [str(path) for path in args.targets if not is_file(path)]
     if missing:
         raise ConfigError(f"no such problem file: {', '.join(missing)}")
     data = {

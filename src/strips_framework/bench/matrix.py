@@ -23,7 +23,6 @@ Every mistake is reported with the file, the key path and what was expected.
 from __future__ import annotations
 
 import itertools
-import tomllib
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -39,9 +38,11 @@ from strips_framework.bench.configs import (
 )
 from strips_framework.bench.problems import ProblemFile, expand_problem_set
 from strips_framework.config import COMPONENTS, DEFAULT_CHOICES, Config
-from strips_framework.errors import ConfigError, StripsError
+from strips_framework.errors import ConfigError, InputError, StripsError
+from strips_framework.user_files import read_toml
 from strips_framework.planner import Planner
 from strips_framework.plugins import Registry
+from strips_framework.search.limits import MAX_MEMORY, MAX_TIME
 
 PRODUCT_KINDS = (*COMPONENTS, "heuristic")
 TOP_KEYS = ("repetitions", "seed", "limits", "problems", "product", "configs")
@@ -49,6 +50,9 @@ CONFIG_KINDS = ("file", "command", "anchor")
 
 
 DEFAULT_TIME, DEFAULT_MEMORY = 60.0, 2048
+MAX_REPETITIONS = 10_000
+#: Repetition r runs with PYTHONHASHSEED = seed + r, which Python takes up to this.
+MAX_HASH_SEED = 2**32 - 1
 
 
 @frozen
@@ -88,13 +92,7 @@ class Matrix:
 
     @classmethod
     def from_file(cls, path: Path) -> Matrix:
-        try:
-            data = tomllib.loads(path.read_text(encoding="utf-8"))
-        except OSError as error:
-            raise ConfigError(f"{path}: cannot read matrix: {error.strerror}") from None
-        except tomllib.TOMLDecodeError as error:
-            raise ConfigError(f"{path}: not valid TOML: {error}") from None
-        return cls.from_dict(data, str(path), path.resolve().parent)
+        return cls.from_dict(read_toml(path, "the matrix"), str(path), path.resolve().parent)
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], source: str, base: Path) -> Matrix:
@@ -117,12 +115,10 @@ class Matrix:
         for name in names:
             if names.count(name) > 1:
                 reader.fail("configs", f"the configuration name {name!r} is used twice")
-        return cls(
-            source, tuple(_unique(problems)), tuple(configs),
-            reader.integer(data, "repetitions", 1, minimum=1),
-            reader.integer(data, "seed", 0, minimum=0),
-            reader.limits(reader.table(data, "limits")),
-        )
+        repetitions = reader.integer(data, "repetitions", 1, MAX_REPETITIONS)
+        seed = reader.integer(data, "seed", 0, MAX_HASH_SEED + 1 - repetitions)
+        limits = reader.limits(reader.table(data, "limits"))
+        return cls(source, tuple(_unique(problems)), tuple(configs), repetitions, seed, limits)
 
     def runs(self) -> list[RunSpec]:
         """Every run, problem-major so that early results cover every configuration."""
@@ -180,11 +176,14 @@ class _Reader:
         self.expect(value, dict, key, "a table")
         return value
 
-    def integer(self, data: dict[str, Any], key: str, default: int, minimum: int) -> int:
+    def integer(self, data: dict[str, Any], key: str, default: int, maximum: int) -> int:
+        """An integer from 0 (1 for a count) to ``maximum``."""
+        minimum = 1 if key == "repetitions" else 0
         value = data.get(key, default)
-        self.expect(value, int, key, f"an integer >= {minimum}")
-        if value < minimum:
-            self.fail(key, f"expected an integer >= {minimum}, got {value}")
+        what = f"an integer from {minimum} to {maximum}"
+        self.expect(value, int, key, what)
+        if not minimum <= value <= maximum:
+            self.fail(key, f"expected {what}, got {value}")
         return value
 
     def limits(self, table: dict[str, Any]) -> RunLimits:
@@ -195,17 +194,18 @@ class _Reader:
         self.expect(time, (int, float), "limits.time", "seconds > 0")
         memory = table.get("memory", DEFAULT_MEMORY)
         self.expect(memory, int, "limits.memory", "MiB (an integer) > 0")
-        if time <= 0 or memory <= 0:
-            self.fail("limits", f"time and memory must be > 0, got time={time}, memory={memory}")
+        if not 0 < time <= MAX_TIME:
+            self.fail("limits.time", f"expected seconds > 0 and <= {MAX_TIME}, got {time}")
+        if not 0 < memory <= MAX_MEMORY:
+            self.fail("limits.memory", f"expected MiB > 0 and <= {MAX_MEMORY}, got {memory}")
         return RunLimits(float(time), memory)
 
     def strips_toml(self, relative: str, path: str) -> dict[str, Any]:
         self.expect(relative, str, path, "a path to a strips.toml")
-        file = self.base / relative
         try:
-            return tomllib.loads(file.read_text(encoding="utf-8"))
-        except (OSError, tomllib.TOMLDecodeError) as error:
-            self.fail(path, f"cannot read the config {file}: {error}")
+            return read_toml(self.base / relative, "the config")
+        except InputError as error:
+            self.fail(path, str(error))
 
     def checked(self, name: str, data: dict[str, Any], path: str) -> PlannerConfig:
         """A planner configuration, checked now so that no run fails on a typo."""

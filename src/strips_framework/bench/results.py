@@ -14,14 +14,12 @@ from pathlib import Path
 from typing import Any
 
 from strips_framework.errors import InputError
+from strips_framework.user_files import read_text
 
 
 def read_rows(path: Path) -> list[dict[str, Any]]:
     """Every complete row of a results file."""
-    try:
-        lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
-    except OSError as error:
-        raise InputError(str(path), None, None, f"cannot read results: {error.strerror}") from None
+    lines = read_text(path, "the results").splitlines(keepends=True)
     return [row for _, row in _complete_rows(lines, str(path))]
 
 
@@ -53,7 +51,7 @@ class ResultsFile:
                 "results file exists: pass --resume to continue it, or choose another --output",
             )
         if path.exists() and resume:
-            lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
+            lines = read_text(path, "the results").splitlines(keepends=True)
             end = 0
             for end, row in _complete_rows(lines, str(path)):
                 self.done.add(row["key"])

@@ -22,6 +22,7 @@ from pathlib import Path
 from attrs import frozen
 
 from strips_framework.errors import InputError
+from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
 from strips_framework.logic.formulas import (
@@ -110,6 +111,7 @@ class _Parser:
         self.path = path
         self.tokens = _tokenize(text, path)
         self.pos = 0
+        self.depth = 0  # parenthesized formulas, negations, quantifiers and terms being read
 
     # -- token helpers --------------------------------------------------------------------
 
@@ -133,6 +135,15 @@ class _Parser:
         if token.kind != "op" or token.text != text:
             raise self.error(f"'{text}'")
         return self.next()
+
+    def descend(self) -> None:
+        """One level deeper (undone by ``self.depth -= 1``); input nested deeper than
+        :data:`MAX_NESTING` is refused at the token that goes too deep."""
+        self.depth += 1
+        if self.depth > MAX_NESTING:
+            token = self.peek()
+            message = f"formula nested deeper than {MAX_NESTING} levels"
+            raise InputError(self.path, token.line, token.column, message)
 
     def at(self, text: str) -> bool:
         token = self.peek()
@@ -225,22 +236,22 @@ class _Parser:
 
     def unit(self) -> Formula:
         token = self.peek()
-        if token.kind == "op":
-            if token.text == "(":
-                self.next()
-                inner = self.formula()
-                self.expect(")")
-                return inner
-            if token.text == "~":
-                self.next()
-                return Not(self.unit())
-            if token.text in ("!", "?"):
-                self.next()
-                variables = self.variable_list()
-                self.expect(":")
-                body = self.unit()
-                return Forall(variables, body) if token.text == "!" else Exists(variables, body)
-        return self.atomic()
+        if token.kind != "op" or token.text not in ("(", "~", "!", "?"):
+            return self.atomic()
+        self.descend()
+        self.next()
+        if token.text == "(":
+            inner = self.formula()
+            self.expect(")")
+        elif token.text == "~":
+            inner = Not(self.unit())
+        else:
+            variables = self.variable_list()
+            self.expect(":")
+            body = self.unit()
+            inner = Forall(variables, body) if token.text == "!" else Exists(variables, body)
+        self.depth -= 1
+        return inner
 
     def variable_list(self) -> list[Var]:
         self.expect("[")
@@ -287,12 +298,14 @@ class _Parser:
             raise self.error("a term", token)
         if not self.at("("):
             return symbol
+        self.descend()
         self.next()
         args = [self.term()]
         while self.at(","):
             self.next()
             args.append(self.term())
         self.expect(")")
+        self.depth -= 1
         return (symbol, *args)
 
 
@@ -421,13 +434,7 @@ def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:
 
 def load_tptp(path: str | Path) -> TptpProblem:
     """Read and parse a TPTP file; a missing or unreadable file is an :class:`InputError`."""
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except OSError as error:
-        raise InputError(str(path), None, None, f"cannot read: {error.strerror}") from None
-    except UnicodeDecodeError as error:
-        raise InputError(str(path), None, None, f"not UTF-8 text: {error.reason}") from None
-    return parse_tptp(text, str(path))
+    return parse_tptp(read_text(Path(path)), str(path))
 
 
 def szs_status(problem: TptpProblem, result: ProofResult) -> str:

@@ -17,10 +17,14 @@ Grammar, loosest binding first::
 
 A quantifier may stand wherever an operand may (``A & forall x: B | C`` reads
 ``A & (forall x: (B | C))``), which an LALR grammar can only express through a
-shift/reduce conflict that lark resolves silently; recursive descent states the rule in
-one line (:meth:`WffParser._unary`) and lets every error say in plain words what was
-expected. The same parser reads the atoms, atom lists and names of the native problem
-format, so positions and messages are uniform across a ``.strips`` file.
+shift/reduce conflict that a parser generator such as lark resolves silently; recursive
+descent states the rule in one line (:meth:`WffParser._unary`) and lets every error say in
+plain words what was expected. The same parser reads the atoms, atom lists and names of
+the native problem format, so positions and messages are uniform across a ``.strips``
+file. It is also fast enough for large worlds (one regular expression drives the
+tokenizer; tokens are named tuples), and the native loader reads plain ground facts
+without it. Nesting deeper than :data:`~strips_framework.user_files.MAX_NESTING` is
+refused with a clean error rather than a ``RecursionError``.
 
 Identifiers are letters, digits and ``_``, with inner ``-`` (``three-boxes``, ``a1``).
 A quantified identifier is a :class:`~strips_framework.logic.formulas.Var`, one of the
@@ -31,11 +35,14 @@ a constant (checked against the declared constants when the caller gives them).
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Collection, Iterable, Mapping
 
-from attrs import define, field, frozen
+from typing import NamedTuple
+
+from attrs import define, field
 
 from strips_framework.errors import InputError
+from strips_framework.user_files import MAX_NESTING
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -67,9 +74,9 @@ _TOKEN = re.compile(
 _KEYWORDS = {"not": "NOT", "forall": "FORALL", "exists": "EXISTS", "true": "TRUE", "false": "FALSE"}
 
 
-@frozen
-class Token:
-    """One lexeme with its 1-based position in the whole file."""
+class Token(NamedTuple):
+    """One lexeme with its 1-based position in the whole file (a named tuple: a large
+    world has hundreds of thousands)."""
 
     kind: str
     text: str
@@ -86,31 +93,29 @@ def tokenize(
     larger file reports positions in that file; later lines of ``text`` start at column 1.
     """
     tokens: list[Token] = []
-    pos, line_start, first_line = 0, 0, True
-
-    def column_at(offset: int) -> int:
-        return column + offset if first_line else offset - line_start + 1
-
-    while pos < len(text):
-        match = _TOKEN.match(text, pos)
-        if match is None:
-            raise InputError(
-                path, line, column_at(pos), f"found unexpected character '{text[pos]}'"
-            )
-        kind = match.lastgroup or ""
+    append, keywords, skipped = tokens.append, _KEYWORDS, ("space", "comment")
+    shift = column  # column = offset + shift: on the first line, then after each newline
+    end = 0
+    for match in _TOKEN.finditer(text):
+        pos = match.start()
+        if pos != end:  # finditer skipped a character no token matches
+            break
+        end = match.end()
+        kind = match.lastgroup
         if kind == "newline":
-            line, line_start, first_line = line + 1, match.end(), False
-        elif kind not in ("space", "comment"):
+            line, shift = line + 1, 1 - end
+        elif kind not in skipped:
             word = match.group()
             if kind == "NAME":
-                kind = _KEYWORDS.get(word, "NAME")
-            tokens.append(Token(kind, word, line, column_at(pos)))
-        pos = match.end()
+                kind = keywords.get(word, "NAME")
+            append(Token(kind, word, line, pos + shift))  # type: ignore[arg-type]
+    if end != len(text):
+        raise InputError(path, line, end + shift, f"found unexpected character '{text[end]}'")
     if tokens:
         last = tokens[-1]
         tokens.append(Token("END", end_name, last.line, last.column + len(last.text)))
     else:
-        tokens.append(Token("END", end_name, line, column_at(pos)))
+        tokens.append(Token("END", end_name, line, end + shift))
     return tokens
 
 
@@ -152,7 +157,7 @@ class WffParser:
     """A cursor over the tokens of one wff, atom list or declaration line.
 
     ``params`` are the names that denote schema parameters; ``constants`` (when given)
-    the declared constants; ``arities`` (when given) is checked and extended at every
+    the declared constants (any collection: a file's parsers share one); ``arities`` (when given) is checked and extended at every
     atom. ``hint`` is added to the message about an unknown identifier, to say what the
     surrounding construct allows.
     """
@@ -163,16 +168,17 @@ class WffParser:
         path: str,
         *,
         params: Iterable[str] = (),
-        constants: Iterable[str] | None = None,
+        constants: Collection[str] | None = None,
         arities: Arities | None = None,
         hint: str = "",
     ) -> None:
         self.tokens, self.path, self.index = tokens, path, 0
         self.params = tuple(params)
-        self.constants = None if constants is None else frozenset(constants)
+        self.constants = constants  # looked into once per identifier: not copied per wff
         self.arities, self.hint = arities, hint
         self._bound: list[str] = []  # quantified variables in scope, innermost last
         self._wildcard = False
+        self._depth = 0  # formulas, negations, implications and terms being read
 
     # --- cursor ---------------------------------------------------------------------
 
@@ -209,19 +215,30 @@ class WffParser:
     def fail(self, token: Token, message: str) -> InputError:
         return InputError(self.path, token.line, token.column, message)
 
+    def _descend(self) -> None:
+        """One level deeper (undone by ``self._depth -= 1``); refuse input nested deeper
+        than :data:`MAX_NESTING` at the token that goes too deep."""
+        self._depth += 1
+        if self._depth > MAX_NESTING:
+            raise self.fail(self.peek, f"formula nested deeper than {MAX_NESTING} levels")
+
     # --- formulas -------------------------------------------------------------------
 
     def formula(self) -> Formula:
         """``iff``: the loosest-binding level."""
+        self._descend()
         left = self._implies()
         if self.accept("IFF"):
-            return Iff(left, self.formula())
+            left = Iff(left, self.formula())
+        self._depth -= 1
         return left
 
     def _implies(self) -> Formula:
         left = self._or()
         if self.accept("IMPLIES"):
-            return Implies(left, self._implies())
+            self._descend()
+            left = Implies(left, self._implies())
+            self._depth -= 1
         return left
 
     def _or(self) -> Formula:
@@ -238,7 +255,10 @@ class WffParser:
 
     def _unary(self) -> Formula:
         if self.accept("NOT"):
-            return Not(self._unary())
+            self._descend()
+            negated = Not(self._unary())
+            self._depth -= 1
+            return negated
         if self.peek.kind in ("FORALL", "EXISTS"):
             return self._quantified()
         return self._primary()
@@ -320,12 +340,14 @@ class WffParser:
 
     def _arguments(self) -> tuple[Term | Var, ...]:
         self.expect("LPAREN", "'('")
+        self._descend()
         args = [self.term()]
         while self.accept("COMMA"):
             args.append(self.term())
         if self.peek.kind != "RPAREN":
             raise self.error("',' or ')'")
         self.next()
+        self._depth -= 1
         return tuple(args)
 
     def _as_term(self, token: Token, args: tuple[Term | Var, ...] | None) -> Term | Var:
@@ -387,7 +409,7 @@ def parse_formula(
         tokenize(text, path, line, column),
         path,
         params=params,
-        constants=constants,
+        constants=None if constants is None else frozenset(constants),
         arities=arities,
     )
     formula = parser.formula()

@@ -16,13 +16,14 @@ def read_domain(source: Source) -> Domain:
     top = source.read()
     reader = Reader(source, {"=": 2}, set())
     name = header(reader, top, "domain")
+    reader.types = _declared_types(reader, top)
     requirements: tuple[str, ...] = ()
     types: list[tuple[str, str]] = []
     constants: list[Parameter] = []
     predicates: list[Predicate] = []
     functions: list[str] = []
     bodies: list[Node] = []
-    for section in sections(reader, top, "domain"):
+    for section in sections(reader, top, "domain", once=(":requirements",)):
         key = section[0]
         if key == ":requirements":
             requirements = reader.requirements(section)
@@ -82,6 +83,18 @@ def read_domain(source: Source) -> Domain:
     )
 
 
+def _declared_types(reader: Reader, top: Node) -> frozenset[str]:
+    """``object`` and every type the ``(:types ...)`` section names, as a type or as a
+    parent (IPC domains often leave a parent such as ``vehicle`` undeclared otherwise)."""
+    declared = {"object"}
+    for section in top[2:]:
+        if isinstance(section, Node) and section and section[0] == ":types":
+            for item in reader.typed_list(section, section[1:], variables=False):
+                declared.add(item.name)
+                declared.update(item.types)
+    return frozenset(declared)
+
+
 def _functions(reader: Reader, section: Node) -> Iterator[str]:
     items = section[1:]
     index = 0
@@ -98,7 +111,8 @@ def _functions(reader: Reader, section: Node) -> Iterator[str]:
 
 
 def _keyed(reader: Reader, section: Node, keys: tuple[str, ...]) -> dict[str, object]:
-    """The ``:key value`` pairs after an action's name."""
+    """The ``:key value`` pairs after an action's name, each key at most once (a second
+    ``:precondition`` is a mistake, not a replacement)."""
     values: dict[str, object] = {}
     items = section[2:]
     if len(items) % 2:
@@ -108,6 +122,9 @@ def _keyed(reader: Reader, section: Node, keys: tuple[str, ...]) -> dict[str, ob
             raise reader.error(
                 section, f"expected one of {', '.join(keys)}, found {show_value(key)}"
             )
+        if key in values:
+            where = value if isinstance(value, Node) else section
+            raise reader.error(where, f"{key} is given twice in action {section[1]!r}")
         values[str(key)] = value
     return values
 

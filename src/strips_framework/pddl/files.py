@@ -6,6 +6,7 @@ import re
 from pathlib import Path
 
 from strips_framework.errors import InputError
+from strips_framework.user_files import is_file
 from strips_framework.pddl.domain_file import read_domain
 from strips_framework.pddl.problem_file import read_problem
 from strips_framework.pddl.sexpr import Source
@@ -13,10 +14,14 @@ from strips_framework.pddl.task import PddlTask
 
 
 def _source(path: Path) -> Source:
+    """The file's text; bytes that are not UTF-8 become U+FFFD (old IPC files have Latin-1
+    comments, which must not stop a task from loading; in a name they fail as any unknown
+    name does)."""
     try:
-        text = path.read_text(encoding="utf-8", errors="replace")
-    except OSError as error:
-        raise InputError(str(path), None, None, f"cannot read the file: {error.strerror}") from None
+        text = path.read_bytes().decode("utf-8", errors="replace")
+    except (OSError, ValueError) as error:  # ValueError: a NUL byte in the name
+        reason = getattr(error, "strerror", None) or str(error)
+        raise InputError(str(path), None, None, f"cannot read the file: {reason}") from None
     return Source(text, str(path))
 
 
@@ -51,7 +56,7 @@ def find_domain(problem_path: Path) -> Path:
     that were tried."""
     candidates = domain_candidates(problem_path)
     for candidate in candidates:
-        if candidate.is_file() and candidate != problem_path:
+        if is_file(candidate) and candidate != problem_path:
             return candidate
     tried = ", ".join(candidate.name for candidate in candidates)
     raise InputError(

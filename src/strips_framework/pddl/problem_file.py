@@ -3,6 +3,8 @@ values, goal and metric."""
 
 from __future__ import annotations
 
+import warnings
+
 from strips_framework.pddl.formulas import Atom, Formula, Parameter
 from strips_framework.pddl.reader import TOTAL_COST, Reader, header, integer, sections
 from strips_framework.pddl.sexpr import Node, Source
@@ -12,7 +14,8 @@ from strips_framework.pddl.task import Domain, Problem
 def read_problem(source: Source, domain: Domain) -> Problem:
     top = source.read()
     arities = {"=": 2, **{pred.name: len(pred.params) for pred in domain.predicates}}
-    reader = Reader(source, arities, {const.name for const in domain.constants})
+    types = frozenset({"object", *(kind for pair in domain.types for kind in pair)})
+    reader = Reader(source, arities, {const.name for const in domain.constants}, types)
     name = header(reader, top, "problem")
     domain_name = ""
     objects: list[Parameter] = []
@@ -20,11 +23,18 @@ def read_problem(source: Source, domain: Domain) -> Problem:
     goal: Formula | None = None
     goal_section: Node | None = None
     minimize_cost = False
-    for section in sections(reader, top, "problem"):
+    for section in sections(reader, top, "problem", once=(":domain", ":goal", ":metric")):
         key = section[0]
         if key == ":domain":
             reader.arity(section, 1)
             domain_name = reader.name(section[1], section, "the domain name")
+            if domain_name != domain.name:
+                line, column = source.position(section.offset)
+                warnings.warn(
+                    f"{source.path}:{line}:{column}: the problem names domain {domain_name!r}, "
+                    f"but the domain file defines {domain.name!r}",
+                    stacklevel=2,
+                )
         elif key == ":requirements":
             reader.requirements(section)
         elif key == ":objects":

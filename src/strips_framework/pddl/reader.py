@@ -46,10 +46,18 @@ class Reader:
     """Parsing helpers shared by the domain and the problem: they know the source (for
     errors), the declared predicates (for arity checks) and the known objects."""
 
-    def __init__(self, source: Source, predicates: dict[str, int], objects: set[str]) -> None:
+    def __init__(
+        self,
+        source: Source,
+        predicates: dict[str, int],
+        objects: set[str],
+        types: frozenset[str] | None = None,
+    ) -> None:
         self.source = source
         self.arities = predicates
         self.objects = objects
+        #: The declared types (``object`` included); ``None`` while ``:types`` is read.
+        self.types = types
 
     def error(self, where: Node | int, message: str) -> Exception:
         return self.source.error(where, message)
@@ -98,8 +106,15 @@ class Reader:
         if isinstance(item, Node):
             if not item or item[0] != "either" or len(item) < 2:
                 raise self.error(item, "expected a type name or (either type ...)")
-            return tuple(self.name(kind, item, "a type name") for kind in item[1:])
-        return (self.name(item, parent, "a type name"),)
+            kinds = tuple(self.name(kind, item, "a type name") for kind in item[1:])
+        else:
+            kinds = (self.name(item, parent, "a type name"),)
+        for kind in kinds:
+            if self.types is not None and kind not in self.types:
+                declared = ", ".join(sorted(self.types))
+                where = item if isinstance(item, Node) else parent
+                raise self.error(where, f"undeclared type {kind!r} (declared types: {declared})")
+        return kinds
 
     def atom(self, node: Node, variables: frozenset[str]) -> Atom:
         head = node[0] if node else None
@@ -169,12 +184,19 @@ def show_value(value: object) -> str:
     return "a list" if isinstance(value, Node) else repr(value)
 
 
-def sections(reader: Reader, top: Node, kind: str) -> Iterator[Node]:
-    """The ``(:section ...)`` lists after ``(define (kind name) ...)``."""
+def sections(reader: Reader, top: Node, kind: str, once: tuple[str, ...]) -> Iterator[Node]:
+    """The ``(:section ...)`` lists after ``(define (kind name) ...)``; a section of
+    ``once`` given again is an error (the later one must not silently win)."""
+    seen: dict[str, Node] = {}
     for item in top[2:]:
         node = reader.node(item, top, f"a '(:section ...)' of the {kind}")
         if not node or not isinstance(node[0], str) or not node[0].startswith(":"):
             raise reader.error(node, f"expected a '(:section ...)' of the {kind}")
+        key = node[0]
+        if key in once and key in seen:
+            line, _ = reader.source.position(seen[key].offset)
+            raise reader.error(node, f"({key} ...) is given twice (first at line {line})")
+        seen[key] = node
         yield node
 
 

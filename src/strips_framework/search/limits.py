@@ -4,8 +4,16 @@ from __future__ import annotations
 
 from attrs import field, frozen, validators
 
+#: The largest time (seconds) and memory (MiB) limits: what ``setitimer`` and
+#: ``setrlimit`` accept on every platform the CLI runs on (a larger value would overflow
+#: the system call when the limit is applied, after the problem was read).
+MAX_TIME = 10**9
+MAX_MEMORY = 2**40
+
 _positive = [validators.instance_of((int, float)), validators.gt(0)]
 _positive_int = [validators.instance_of(int), validators.gt(0)]
+_time = [*_positive, validators.le(MAX_TIME)]
+_memory = validators.optional([*_positive_int, validators.le(MAX_MEMORY)])
 
 
 @frozen
@@ -16,8 +24,8 @@ class Limits:
     over ground tasks, ``expansions`` (states expanded) and ``memory`` (MiB of the process;
     both unlimited when absent)."""
 
-    time: float = field(default=60.0, validator=_positive)
+    time: float = field(default=60.0, validator=_time)
     nodes: int = field(default=10_000, validator=_positive_int)
     effort: int = field(default=300, validator=_positive_int)
     expansions: int | None = field(default=None, validator=validators.optional(_positive_int))
-    memory: int | None = field(default=None, validator=validators.optional(_positive_int))
+    memory: int | None = field(default=None, validator=_memory)

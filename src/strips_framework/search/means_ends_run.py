@@ -17,7 +17,7 @@ from strips_framework.search.components import (
 from strips_framework.search.goal_prover import GoalProver
 from strips_framework.search.limits import Limits
 from strips_framework.search.node import Goal, Node
-from strips_framework.search.result import EXHAUSTED, SOLVED, SearchResult
+from strips_framework.search.result import EXHAUSTED, INTERRUPTED, SOLVED, SearchResult
 from strips_framework.search.tree import LimitReached, SearchTree
 from strips_framework.world import WorldModel
 
@@ -55,6 +55,8 @@ class MeansEndsRun:
                 solution = self._expand(node)
         except LimitReached as limit:
             return self.tree.result(limit.status, None)
+        except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
+            return self.tree.result(INTERRUPTED, None)
         return self.tree.result(SOLVED if solution else EXHAUSTED, solution)
 
     def _push(self, node: Node) -> None:

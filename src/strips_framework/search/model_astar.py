@@ -67,7 +67,7 @@ class ModelAStarSearch:
         # Imported here, not at the top, so that registering the strategy stays cheap.
         from strips_framework.search.goal_prover import GoalProver
         from strips_framework.search.node import Goal
-        from strips_framework.search.result import EXHAUSTED, SOLVED
+        from strips_framework.search.result import EXHAUSTED, INTERRUPTED, SOLVED
         from strips_framework.search.tree import LimitReached, SearchTree
         goal_prover = GoalProver(problem, prover, limits.effort)
         tree = SearchTree(limits, goal_prover)
@@ -110,6 +110,8 @@ class ModelAStarSearch:
                     heapq.heappush(queue, (evaluator.evaluate(child), next(counter), child))
         except LimitReached as limit:
             return tree.result(limit.status, None)
+        except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
+            return tree.result(INTERRUPTED, None)
         return tree.result(EXHAUSTED, None)
 
     def _applicable(

@@ -11,6 +11,8 @@ SOLVED = "solved"
 EXHAUSTED = "exhausted"  # every node was expanded: no plan within this strategy's reach
 NODE_LIMIT = "node-limit"
 TIME_LIMIT = "time-limit"
+#: The user pressed Ctrl-C: the search stopped where it was, with its statistics so far.
+INTERRUPTED = "interrupted"
 
 
 @frozen

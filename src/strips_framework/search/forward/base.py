@@ -11,6 +11,7 @@ from strips_framework.search.components import StateEstimator
 from strips_framework.search.forward.budget import Budget, LimitReached, peak_mib
 from strips_framework.search.forward.result import (
     EXHAUSTED_INCOMPLETE,
+    INTERRUPTED,
     MEMORY_LIMIT,
     SOLVED,
     UNSOLVABLE,
@@ -70,6 +71,8 @@ class ForwardStrategy:
             )
         except LimitReached as limit:
             status = limit.status
+        except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
+            status = INTERRUPTED
         except MemoryError:
             run.space.clear()  # let the search's memory go before anything else is made
             status = MEMORY_LIMIT

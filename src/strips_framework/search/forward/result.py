@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from attrs import frozen
 
+from strips_framework.search import result
+
 SOLVED = "solved"
 #: A complete search visited every reachable state that is not a proven dead end.
 UNSOLVABLE = "unsolvable"
@@ -12,6 +14,7 @@ EXHAUSTED_INCOMPLETE = "exhausted-incomplete"
 TIME_LIMIT = "time-limit"
 MEMORY_LIMIT = "memory-limit"
 EXPANSION_LIMIT = "expansion-limit"
+INTERRUPTED = result.INTERRUPTED
 
 #: The status that each limit ends a run with, by the ``[limits]`` key.
 LIMIT_STATUS = {"time": TIME_LIMIT, "memory": MEMORY_LIMIT, "expansions": EXPANSION_LIMIT}

@@ -1,0 +1,134 @@
+"""Reading and writing the user's files: text that must be UTF-8, TOML, the nesting depth
+every parser allows, and result files written whole or not at all. Each failure is an
+:class:`~strips_framework.errors.InputError` naming the file and, where there is one, the
+line and column (a bad byte, a TOML syntax error, the parenthesis that nests too deep),
+never a traceback.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import sys
+import tempfile
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from strips_framework.errors import InputError
+
+#: How deep parentheses, brackets, negations and terms may nest in any input. The parsers
+#: refuse deeper input with a clean error at the opening that goes too deep: beyond the
+#: parsers, clause form, grounding, unification and printing recurse once or more per
+#: level on Python's stack (1000 frames by default), and no hand-written or generated
+#: planning input comes near this depth.
+MAX_NESTING = 100
+
+_TOML_POSITION = re.compile(r"\s*\(at (?:line (\d+), column (\d+)|end of document)\)$")
+_DIGITS = re.compile(r"[0-9][0-9_]*")
+
+
+def is_file(path: Path) -> bool:
+    """``path.is_file()``, false (not an exception) for names the system refuses: too
+    long, or with a NUL byte."""
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
+def read_text(path: Path, what: str = "the file") -> str:
+    """The file's text, decoded as UTF-8; a bad byte is reported at its line and column."""
+    try:
+        data = path.read_bytes()
+    except (OSError, ValueError) as error:
+        reason = getattr(error, "strerror", None) or str(error)
+        raise InputError(str(path), None, None, f"cannot read {what}: {reason}") from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        before = data[: error.start].decode("utf-8")  # the bytes before it are good
+        line, column = _position(before, len(before))
+        byte = data[error.start : error.start + 1].hex()
+        message = f"{what} is not UTF-8 text: byte 0x{byte} ({error.reason})"
+        raise InputError(str(path), line, column, message) from None
+
+
+def read_toml(path: Path, what: str) -> dict[str, Any]:
+    """The TOML file at ``path`` as a dict; syntax errors give their line and column."""
+    text = read_text(path, what)
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        message = str(error)
+        position = _TOML_POSITION.search(message)
+        line, column = _position(text, len(text))  # "(at end of document)"
+        if position is not None:
+            if position.group(1):
+                line, column = int(position.group(1)), int(position.group(2))
+            message = message[: position.start()]
+        raise InputError(str(path), line, column, f"not valid TOML: {message}") from None
+    except RecursionError:
+        line, column = _deepest_opening(text)
+        message = f"not valid TOML: arrays or inline tables nested deeper than {MAX_NESTING}"
+        raise InputError(str(path), line, column, message) from None
+    except ValueError:  # an integer longer than Python converts (sys.int_info)
+        limit = sys.get_int_max_str_digits()
+        long = [m.start() for m in _DIGITS.finditer(text) if len(m.group()) > limit]
+        line, column = _position(text, long[0]) if long else (None, None)
+        message = f"not valid TOML: an integer of more than {limit} digits"
+        raise InputError(str(path), line, column, message) from None
+
+
+def _position(text: str, offset: int) -> tuple[int, int]:
+    """The 1-based line and column of ``offset`` in ``text``."""
+    return text.count("\n", 0, offset) + 1, offset - (text.rfind("\n", 0, offset) + 1) + 1
+
+
+def _deepest_opening(text: str) -> tuple[int, int]:
+    """Where ``[`` / ``{`` first nest deeper than :data:`MAX_NESTING` (strings and comments
+    are not told apart: this only places an error tomllib has already found)."""
+    depth = 0
+    for offset, char in enumerate(text):
+        if char in "[{":
+            depth += 1
+            if depth > MAX_NESTING:
+                return _position(text, offset)
+        elif char in "]}":
+            depth -= 1
+    return 1, 1
+
+
+def check_writable(path: Path, what: str) -> None:
+    """Fail now, not after a long search, if ``path`` cannot be written: its folder is
+    missing or not a folder, or the path is a folder."""
+    folder = path.parent
+    try:
+        ok = folder.is_dir() and not path.is_dir() and os.access(folder, os.W_OK)
+    except (OSError, ValueError):
+        ok = False
+    if not ok:
+        reason = "is a folder" if _is_dir(path) else f"cannot write into {folder}"
+        raise InputError(str(path), None, None, f"cannot write {what}: {reason}")
+
+
+def _is_dir(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except (OSError, ValueError):
+        return False
+
+
+def write_atomically(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` through a temporary file in the same folder, renamed over
+    it: a reader (or an interrupted run) sees the old file or the new one, never half."""
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as file:
+            file.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(temporary)
+        raise
