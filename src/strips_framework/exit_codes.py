@@ -14,6 +14,8 @@
 
 from __future__ import annotations
 
+from strips_framework.result import Status
+
 SOLVED = 0
 INVALID_PLAN = 1
 INPUT_ERROR = 2
@@ -22,18 +24,18 @@ UNSOLVED_INCOMPLETE = 12
 OUT_OF_MEMORY = 22
 OUT_OF_TIME = 23
 
-_BY_STATUS = {
-    "solved": SOLVED,
-    "unsolvable": UNSOLVABLE,
-    "exhausted-incomplete": UNSOLVED_INCOMPLETE,
-    "exhausted": UNSOLVED_INCOMPLETE,  # means-ends and model-astar: no proof of unsolvability
-    "expansion-limit": UNSOLVED_INCOMPLETE,
-    "node-limit": UNSOLVED_INCOMPLETE,
-    "memory-limit": OUT_OF_MEMORY,
-    "time-limit": OUT_OF_TIME,
+#: The exit code of a search that ended with each status.
+BY_STATUS: dict[Status, int] = {
+    Status.SOLVED: SOLVED,
+    Status.UNSOLVABLE: UNSOLVABLE,
+    Status.EXHAUSTED: UNSOLVED_INCOMPLETE,
+    Status.NODE_LIMIT: UNSOLVED_INCOMPLETE,
+    Status.EXPANSION_LIMIT: UNSOLVED_INCOMPLETE,
+    Status.MEMORY_LIMIT: OUT_OF_MEMORY,
+    Status.TIME_LIMIT: OUT_OF_TIME,
 }
 
 
-def for_status(status: str) -> int:
+def for_status(status: Status) -> int:
     """The exit code of a search that ended with ``status``."""
-    return _BY_STATUS[status]
+    return BY_STATUS[status]
