@@ -411,3 +411,15 @@ class NativeLoader:
             message = f"cannot read the file: {_reason(error)}"
             raise InputError(str(path), 1, None, message) from None
         return _Reader(str(path)).read(blocks)
+
+
+def parse_problem(text: str, source: str = "<text>") -> Problem:
+    """A problem from native-format text made in code; ``source`` stands for the file in
+    messages. ``include`` is refused: it names a file relative to the including one."""
+    blocks = _split(text, source)
+    for block in blocks:
+        if block.keyword == "include":
+            where = block.header
+            raise InputError(source, where.line, where.column, "'include' needs a file: load "
+                             "the problem with Planner.load, or paste the included text")
+    return _Reader(source).read(blocks)
