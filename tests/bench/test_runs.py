@@ -10,7 +10,7 @@ from collections import Counter
 from strips_framework.bench.configs import strips_command
 from strips_framework.cli import main
 
-from .conftest import PUSH_ONE_BOX, THREE_BOXES, fake, read_rows
+from .conftest import PUSH_ONE_BOX, ROOT, THREE_BOXES, fake, read_rows
 
 SMALL = f"""
 repetitions = 2
@@ -151,3 +151,24 @@ one = ["{PUSH_ONE_BOX}"]
     matrix.write_text(matrix.read_text().replace("time = 60", "time = 1"))
     assert main(["bench", str(matrix), "-o", str(out), "--resume", "--no-progress"]) == 0
     assert Counter(row["config"] for row in read_rows(out)) == {"quick": 1, "slow": 1}
+
+
+def test_the_planner_stops_itself_within_the_matrixs_time_limit(write_matrix, tmp_path):
+    """The matrix's time limit reaches the planner (a little less, for start-up), so a
+    long search ends by its own limit, with its statistics, not by SIGKILL."""
+    five_goals = ROOT / "examples" / "robot-world" / "five-goals.strips"
+    matrix = write_matrix(f"""
+[limits]
+time = 8
+memory = 1024
+[problems]
+hard = ["{five_goals}"]
+[configs.bfs]
+evaluator = "breadth-first"
+""")
+    out = tmp_path / "results.jsonl"
+    assert main(["bench", str(matrix), "-o", str(out), "--no-progress"]) == 0
+    (row,) = read_rows(out)
+    assert row["status"] == "timeout" and row["exit_code"] == 23, row["cause"]
+    assert row["cause"] == "the planner's own time limit (exit code 23)"
+    assert row["statistics"]["nodes"] > 0 and row["planner_status"] == "time-limit"
