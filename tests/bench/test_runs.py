@@ -148,7 +148,8 @@ one = ["{PUSH_ONE_BOX}"]
     hung = subprocess.run(["pgrep", "-f", f"fake_planner.py hang {PUSH_ONE_BOX}"],
                           check=False, capture_output=True, text=True).stdout.split()
     assert hung == []  # the hung child was killed with the runner
-    matrix.write_text(matrix.read_text().replace("time = 60", "time = 1"))
+    # 'slow' has no row yet, so its command may change (not 'quick''s, nor the limits).
+    matrix.write_text(matrix.read_text().replace(fake("hang"), fake("solve")))
     assert main(["bench", str(matrix), "-o", str(out), "--resume", "--no-progress"]) == 0
     assert Counter(row["config"] for row in read_rows(out)) == {"quick": 1, "slow": 1}
 
@@ -172,3 +173,19 @@ evaluator = "breadth-first"
     assert row["status"] == "timeout" and row["exit_code"] == 23, row["cause"]
     assert row["cause"] == "the planner's own time limit (exit code 23)"
     assert row["statistics"]["nodes"] > 0 and row["planner_status"] == "time-limit"
+
+
+def test_resume_refuses_a_matrix_whose_configs_or_limits_changed(write_matrix, tmp_path, capsys):
+    out = tmp_path / "results.jsonl"
+    args = ["-o", str(out), "--no-progress", "--jobs", "2"]
+    assert main(["bench", str(write_matrix(SMALL)), *args]) == 0
+    assert len(read_rows(out)) == 12
+    changed_limits = SMALL.replace("time = 30", "time = 20")
+    assert main(["bench", str(write_matrix(changed_limits)), *args, "--resume"]) == 2
+    assert "cannot resume: the limits of 'paper' changed" in capsys.readouterr().err
+    changed_options = SMALL.replace("max_goals = 1", "max_goals = 2")
+    assert main(["bench", str(write_matrix(changed_options)), *args, "--resume"]) == 2
+    assert "cannot resume: the configuration of 'short-goals' changed" in capsys.readouterr().err
+    more = SMALL.replace('["paper", "goal-count"]', '["paper", "goal-count", "breadth-first"]')
+    assert main(["bench", str(write_matrix(more)), *args, "--resume"]) == 0  # only added
+    assert len(read_rows(out)) == 16

@@ -13,6 +13,7 @@ memory / 23 out of time):
 from __future__ import annotations
 
 import sys
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -87,8 +88,28 @@ class PlannerConfig(AnyProblemConfig):
             "--config", str(config),
         )
 
+    def accepts(self, problem: ProblemFile) -> bool:
+        """Every problem, but PDDL only for a ground-task strategy (native problems are
+        first-order world models, which are not grounded)."""
+        return problem.path.suffix == PDDL or not searches_ground_tasks(self.data)
+
     def describe(self) -> dict[str, Any]:
         return {"kind": "planner", "strips.toml": self.data}
+
+
+@cache
+def ground_strategy_names() -> frozenset[str]:
+    """The registered ground-task strategies (looked up once per process)."""
+    from strips_framework.plugins import Registry
+
+    return frozenset(Registry.from_plugins().names("ground-strategy"))
+
+
+def searches_ground_tasks(data: dict[str, Any]) -> bool:
+    """True when the ``strips.toml`` ``data`` names a ground-task strategy."""
+    strategy = data.get("strategy", {})
+    name = strategy.get("name") if isinstance(strategy, dict) else strategy
+    return name in ground_strategy_names()
 
 
 @frozen
