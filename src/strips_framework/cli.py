@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
+
+import attrs
 
 from strips_framework import __version__, exit_codes, report
 from strips_framework.bench import command as bench_command
@@ -16,6 +19,7 @@ from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
 from strips_framework.planner import Planner, is_pddl
 from strips_framework.plugins import KINDS, Registration
+from strips_framework.progress import Progress
 from strips_framework.result import Result, Status
 from strips_framework.search.limits import Clock, LimitReached
 
@@ -125,9 +129,10 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     domain, problem = _domain_and_problem(args.files, "solve")
     clock = Clock(planner.config.limits.time)
     result: Result | None = None
+    progress = Progress(sys.stderr) if sys.stderr.isatty() else None
     try:
-        with enforced(planner.config.limits):
-            result = planner.run(problem, domain, clock)
+        with enforced(planner.config.limits), progress or contextlib.nullcontext():
+            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
         status = limit.status
     except MemoryError:

@@ -29,6 +29,7 @@ if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
     from strips_framework.pddl import PddlTask
     from strips_framework.problem import Problem
+    from strips_framework.progress import Progress
     from strips_framework.proving import TheoremProver
     from strips_framework.result import Result
 
@@ -46,6 +47,8 @@ class Planner:
 
     registry: Registry
     config: Config
+    #: Counts the search's scores for a progress line (the CLI sets it on a terminal).
+    progress: Progress | None = None
 
     @classmethod
     def create(
@@ -91,7 +94,9 @@ class Planner:
         lazy greedy search (:data:`~strips_framework.config.PDDL_DEFAULT_STRATEGY`) unless
         the config chose one, as ``strips solve`` does."""
         config = self.config.for_pddl()
-        return self if config is self.config else Planner(self.registry, config).checked()
+        if config is self.config:
+            return self
+        return Planner(self.registry, config, self.progress).checked()
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
@@ -161,12 +166,13 @@ class Planner:
         check_problem(problem, self.registry, self.config)
         build = self.config.build
         strategy = build(self.registry, "strategy")
+        evaluator = build(self.registry, "evaluator")
         return strategy.search(
             problem,
             build(self.registry, "prover"),
             build(self.registry, "difference"),
             build(self.registry, "relevance"),
-            build(self.registry, "evaluator"),
+            evaluator if self.progress is None else self.progress.evaluator(evaluator),
             self.config.limits,
             clock or Clock(self.config.limits.time),
         )
@@ -182,7 +188,10 @@ class Planner:
         strategy = self.config.build(self.registry, GROUND_STRATEGY)
         heuristic = self.config.build(self.registry, "heuristic")
         clock = clock or Clock(self.config.limits.time)
-        return strategy.search_task(task, heuristic.for_task(task), self.config.limits, clock)
+        estimator = heuristic.for_task(task)
+        if self.progress is not None:
+            estimator = self.progress.estimator(estimator)
+        return strategy.search_task(task, estimator, self.config.limits, clock)
 
     def _require_world_model(self, problem: Path | str) -> None:
         if self.searches_ground_tasks:
