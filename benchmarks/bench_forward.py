@@ -23,7 +23,7 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
 from strips_framework.pddl import find_domain, load_task
 from strips_framework.plugins import Registry
-from strips_framework.search.forward.result import ForwardResult
+from strips_framework.result import Result
 from strips_framework.search.limits import Limits
 
 CONFIGS = [("lazy-gbfs", "ff"), ("gbfs", "ff"), ("astar", "lmcut"), ("breadth-first", "blind")]
@@ -41,9 +41,9 @@ def _task(name: str) -> GroundTask:
 
 
 def _search(registry: Registry, task: GroundTask, strategy: str, heuristic: str,
-            limits: Limits) -> ForwardResult:
+            limits: Limits) -> Result:
     estimator = registry.get("heuristic", heuristic).cls().for_task(task)
-    return registry.get("strategy", strategy).cls().search_task(task, estimator, limits)
+    return registry.get("ground-strategy", strategy).cls().search_task(task, estimator, limits)
 
 
 @pytest.mark.parametrize(("strategy", "heuristic"), CONFIGS)

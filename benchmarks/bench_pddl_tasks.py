@@ -26,12 +26,10 @@ REGISTRY = Registry.from_plugins()
 pytestmark = pytest.mark.filterwarnings(r"ignore:.*with 'admissible' \(its first plan")
 
 
-def _heuristics(strategy: str) -> list[str | None]:
-    searches_ground_tasks = getattr(REGISTRY.get("strategy", strategy).cls, "works_on", None)
-    return REGISTRY.names("heuristic") if searches_ground_tasks == "ground-task" else [None]
-
-
-COMBINATIONS = [(s, h) for s in REGISTRY.names("strategy") for h in _heuristics(s)]
+COMBINATIONS = [
+    *((s, None) for s in REGISTRY.names("strategy")),
+    *((s, h) for s in REGISTRY.names("ground-strategy") for h in REGISTRY.names("heuristic")),
+]
 
 
 BENCH = shared_bench("ipc")

@@ -28,7 +28,11 @@ from strips_framework.planner import Planner
 from strips_framework.search.goal_prover import GoalProver
 
 SIZES = (100, 1_000, 10_000, 100_000)
-FIVE_GOALS = "NEXTTO(BOX1, BOX2) & NEXTTO(BOX3, BOX2) & STATUS(LIGHTSWITCH1, ON) & ONFLOOR & AT(ROBOT, f)"
+#: The goal of ``examples/robot-world/five-goals.strips``.
+FIVE_GOALS = (
+    "NEXTTO(BOX2, BOX3) & NEXTTO(BOX3, DOOR1) & STATUS(LIGHTSWITCH1, ON) & NEXTTO(BOX1, BOX2)"
+    " & INROOM(ROBOT, ROOM2)"
+)
 
 
 def _rss_mib() -> float:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from strips_framework import exit_codes
 from strips_framework.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -32,7 +33,7 @@ def test_solve_json_plan_file_and_tree(tmp_path, capsys):
     assert payload["statistics"]["nodes"] == 9
     assert len(payload["plan"]) == 4
     written = [l for l in plan_file.read_text().splitlines() if not l.startswith(";")]
-    assert written == [f"({step.replace('(', ' ').replace(', ', ' ').rstrip(')')})" for step in payload["plan"]]
+    assert written == payload["plan"] and payload["family"] == "world-model"
     dot = tree.read_text()
     assert dot.startswith("digraph search_tree {")
     assert dot.count("->") == 8  # 9 nodes in a tree
@@ -104,3 +105,31 @@ def test_prove_names_a_missing_file(tmp_path, capsys):
     assert main(["prove", str(tmp_path / "none.p")]) == 2
     err = capsys.readouterr().err
     assert err == f"strips: error: {tmp_path / 'none.p'}: cannot read the file: No such file or directory\n"
+
+
+def test_a_time_limit_during_a_world_model_search_reports_its_statistics(tmp_path, capsys):
+    """The process alarm and the search's own check are one limit: a time limit that runs
+    out during the search ends it with the statistics so far, not 'before the search'."""
+    config = tmp_path / "strips.toml"
+    config.write_text('[evaluator]\nname = "breadth-first"\n[limits]\ntime = 0.5\n')
+    problem = ROOT / "examples" / "robot-world" / "five-goals.strips"
+    code = main(["solve", str(problem), "--config", str(config), "--json"])
+    payload = json.loads(capsys.readouterr().out)
+    assert code == exit_codes.OUT_OF_TIME == payload["exit_code"]
+    assert payload["status"] == "time-limit" and payload["limit"] == "time"
+    assert payload["family"] == "world-model" and payload["statistics"]["nodes"] > 0
+    assert 0.5 <= payload["seconds"] < 5
+
+
+def test_version(capsys):
+    from strips_framework import __version__
+
+    with pytest.raises(SystemExit) as done:
+        main(["--version"])
+    assert done.value.code == 0 and capsys.readouterr().out == f"strips {__version__}\n"
+
+
+def test_every_status_has_an_exit_code():
+    from strips_framework.result import Status
+
+    assert set(exit_codes.BY_STATUS) == set(Status)

@@ -5,6 +5,7 @@ builtins, the plugins of this repository and whatever else is installed (z3, say
 from strips_framework.plugins import Registry
 from strips_framework.testing import (
     EvaluatorConformance,
+    GroundStrategyConformance,
     HeuristicConformance,
     ProverConformance,
     StrategyConformance,
@@ -15,6 +16,7 @@ SUITES = {
     "evaluator": (EvaluatorConformance, "evaluator_class"),
     "heuristic": (HeuristicConformance, "heuristic_class"),
     "strategy": (StrategyConformance, "strategy_class"),
+    "ground-strategy": (GroundStrategyConformance, "strategy_class"),
 }
 
 for kind, (suite, attribute) in SUITES.items():

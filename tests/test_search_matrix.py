@@ -12,10 +12,7 @@ from strips_framework.simulate import replay
 DATA = Path(__file__).resolve().parent / "data"
 REGISTRY = Registry.from_plugins()
 #: The strategies over world models (those over ground tasks are tested in search_forward).
-WORLD_MODEL_STRATEGIES = [
-    r.name for r in REGISTRY.registrations("strategy")
-    if getattr(r.cls, "works_on", "problem") != "ground-task"
-]
+WORLD_MODEL_STRATEGIES = REGISTRY.names("strategy")
 PAIRS = [
     (strategy, evaluator)
     for strategy in WORLD_MODEL_STRATEGIES

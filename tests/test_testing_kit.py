@@ -21,7 +21,8 @@ from strips_framework.formats.native import NativeLoader
 from strips_framework.grounding.task import GroundTask
 from strips_framework.logic.terms import Param
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
-from strips_framework.search.forward.result import SOLVED, ForwardResult, ForwardStatistics
+from strips_framework.result import Result, Status
+from strips_framework.search.forward.result import ForwardStatistics
 from strips_framework.search.node import Node
 from strips_framework.testing import (
     CASES,
@@ -295,21 +296,21 @@ class _Hasty:
     """Returns the first operator as the whole plan."""
 
     name: ClassVar[str] = "hasty"
-    works_on: ClassVar[str] = "ground-task"
     capabilities: ClassVar[frozenset[str]] = frozenset()
+    complete: ClassVar[bool] = True
 
-    def search_task(self, task, estimator, limits, started=None) -> ForwardResult:
-        return ForwardResult(SOLVED, (task.operators[0].name,), 1, ForwardStatistics())
+    def search_task(self, task, estimator, limits, clock=None) -> Result:
+        return Result(Status.SOLVED, (task.operators[0].name,), 1, ForwardStatistics())
 
 
 def test_a_ground_strategy_returning_an_invalid_plan_is_caught():
-    planner = ground_planner("strategy", _Hasty, {"heuristic": "blind"})
+    planner = ground_planner("ground-strategy", _Hasty, {"heuristic": "blind"})
     with pytest.raises(ConformanceFailure, match="is not valid"):
         check_solves_task(planner, "blocks-4")
     with pytest.raises(ConformanceFailure, match="the task has no plan"):
         check_unsolvable(planner)
-    limited = ground_planner("strategy", _Hasty, {"heuristic": "blind"}, limits={"expansions": 1})
-    unlimited = ForwardResult(SOLVED, None, None, ForwardStatistics(expanded=5))
+    limited = ground_planner("ground-strategy", _Hasty, {"heuristic": "blind"}, limits={"expansions": 1})
+    unlimited = Result(Status.SOLVED, None, None, ForwardStatistics(expanded=5))
     with pytest.raises(ConformanceFailure, match="expected 'expansion-limit'"):
         check_expansion_limit(limited, "blocks-4", unlimited)
 

@@ -35,6 +35,14 @@ def strips_register_relevance_filters() -> list[type]:
 
 @hookimpl
 def strips_register_strategies() -> list[type]:
+    from strips_framework.search.means_ends import MeansEndsSearch
+    from strips_framework.search.model_astar import ModelAStarSearch
+
+    return [MeansEndsSearch, ModelAStarSearch]
+
+
+@hookimpl
+def strips_register_ground_strategies() -> list[type]:
     from strips_framework.search.forward.breadth_first import BreadthFirstSearch
     from strips_framework.search.forward.eager import (
         AStarSearch,
@@ -43,12 +51,8 @@ def strips_register_strategies() -> list[type]:
     )
     from strips_framework.search.forward.ehc import EnforcedHillClimbing
     from strips_framework.search.forward.lazy import LazyGreedySearch
-    from strips_framework.search.means_ends import MeansEndsSearch
-    from strips_framework.search.model_astar import ModelAStarSearch
 
     return [
-        MeansEndsSearch,
-        ModelAStarSearch,
         AStarSearch,
         WeightedAStarSearch,
         GreedySearch,

@@ -74,8 +74,12 @@ VOCABULARY: dict[str, dict[str, str]] = {
         "state that lead towards the goal (heuristics without it name none)",
     },
     "strategy": {
+        OPTIMAL: "the plan found is a shortest one when the strategy's soft requirements "
+        "(e.g. an admissible evaluator) hold",
+    },
+    "ground-strategy": {
         OPTIMAL: "the plan found is a cheapest one when the strategy's soft requirements "
-        "(e.g. an admissible evaluator or heuristic) hold",
+        "(e.g. an admissible heuristic) hold",
     },
     "difference": {},
     "relevance": {},
@@ -145,7 +149,7 @@ def check_combination(registry: Registry, config: Config, kinds: Iterable[str]) 
     """Raise :class:`ConfigError` if a chosen implementation lacks a strictly required
     capability of another; warn for soft requirements and undeclared implementations.
     Only the ``kinds`` a run uses are looked at (a forward search has no prover)."""
-    chosen = {kind: registry.get(kind, config.choices[kind].name) for kind in kinds}
+    chosen = {kind: registry.get(kind, config.choice(kind).name) for kind in kinds}
     for kind, registration in chosen.items():
         for need in requirements(registration.cls):
             partner = chosen.get(need.kind)
@@ -156,7 +160,8 @@ def check_combination(registry: Registry, config: Config, kinds: Iterable[str]) 
                 continue
             words = KINDS[need.kind][1]
             message = (
-                f"{config.source}: {KINDS[kind][1]} {registration.name!r} ('{kind}.name') "
+                f"{config.source}: {KINDS[kind][1]} {registration.name!r} "
+                f"('{config.table_of(kind)}.name') "
                 f"needs {_article(words)} {words} with {need.capability!r} ({need.reason}), "
                 f"but "
                 f"{words} {partner.name!r} ('{need.kind}.name') "

@@ -3,26 +3,26 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-from strips_framework import exit_codes
+import attrs
+
+from strips_framework import __version__, exit_codes, report
 from strips_framework.bench import command as bench_command
 from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
 from strips_framework.planner import Planner, is_pddl
 from strips_framework.plugins import KINDS, Registration
-from strips_framework.search.forward.budget import LimitReached
-from strips_framework.search.forward.result import ForwardResult
+from strips_framework.progress import Progress
+from strips_framework.result import Result, Status
+from strips_framework.search.limits import Clock, LimitReached
 from strips_framework.user_files import check_writable, write_atomically
-
-if TYPE_CHECKING:
-    from strips_framework.search.result import SearchResult
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -35,6 +35,7 @@ def _parser() -> argparse.ArgumentParser:
         "11 unsolvable, 12 search ended without a plan (incomplete), 22 out of memory, "
         "23 out of time, 32 a plugin raised an exception, 130 interrupted (Ctrl-C)",
     )
+    parser.add_argument("--version", action="version", version=f"strips {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
 
     solve = commands.add_parser("solve", help="search for a plan")
@@ -139,53 +140,6 @@ def _domain_and_problem(files: list[Path], command: str, rest: int = 0) -> tuple
     return (given[0] if len(given) == 2 else None), given[-1]
 
 
-def _plan_lines(result: SearchResult) -> list[str]:
-    return [step.ipc() for step in result.plan or ()]
-
-
-def _statistics_lines(result: SearchResult) -> list[str]:
-    s = result.statistics
-    return [
-        f"; status: {result.status}",
-        f"; plan length: {len(result.plan) if result.plan is not None else '-'}",
-        f"; nodes: {s.nodes} in the tree, {s.path_nodes} on the solution path",
-        (
-            f"; operator applications: {s.applications} in the tree, "
-            f"{s.path_applications} on the solution path"
-        ),
-        (
-            f"; time: {s.seconds:.3f} s, proving {s.proving_seconds:.3f} s "
-            f"({100 * s.proving_share:.0f}%), {s.proof_attempts} proof attempts"
-        ),
-        f"; expanded: {s.nodes}",
-    ]
-
-
-def _forward_lines(result: ForwardResult) -> list[str]:
-    """The plan, then the figures one a line (``expanded: N`` as Fast Downward's users'
-    scripts look for it)."""
-    s = result.statistics
-    length = len(result.plan) if result.plan is not None else "-"
-    cost = result.cost if result.cost is not None else "-"
-    return [
-        *(result.plan or ()),
-        f"status: {result.status}",
-        f"plan length: {length}",
-        f"plan cost: {cost}",
-        f"expanded: {s.expanded}",
-        f"evaluated: {s.evaluated}",
-        f"generated: {s.generated}",
-        f"reopened: {s.reopened}",
-        f"dead ends: {s.dead_ends}",
-        f"facts: {s.facts}, operators: {s.operators}",
-        (
-            f"time: parse {s.parse_seconds:.3f} s, ground {s.ground_seconds:.3f} s, "
-            f"search {s.search_seconds:.3f} s"
-        ),
-        f"peak memory: {s.peak_memory_mib:.1f} MiB",
-    ]
-
-
 def _solve(planner: Planner, args: argparse.Namespace) -> int:
     from strips_framework.process_limits import enforced
 
@@ -193,80 +147,50 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     for path, what in ((args.plan_file, "the plan"), (args.tree, "the search tree")):
         if path is not None:
             check_writable(path, what)  # before the search, not after it
+    clock = Clock(planner.config.limits.time)
+    result: Result | None = None
+    progress = Progress(sys.stderr) if sys.stderr.isatty() else None
     try:
-        with enforced(planner.config.limits):
-            result = planner.run(problem, domain)
+        with enforced(planner.config.limits), progress or contextlib.nullcontext():
+            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
-        return _report_limit(args, limit.status)
+        status = limit.status
     except MemoryError:
-        return _report_limit(args, "memory-limit")
-    except KeyboardInterrupt:
-        return _report_limit(args, "interrupted")
-    if isinstance(result, ForwardResult):
-        return _report_forward(planner, args, problem, result)
-    if args.tree:
-        from strips_framework.tree_dot import search_tree_to_dot
-
-        write_atomically(args.tree, search_tree_to_dot(result, f"{problem.stem}: search tree"))
-    if args.plan_file and result.plan is not None:
-        write_atomically(args.plan_file, plan_text(_plan_lines(result), len(result.plan), False))
-    if args.json:
-        payload = {
-            "problem": problem.stem,
-            "status": result.status,
-            "plan": [str(step) for step in result.plan] if result.plan is not None else None,
-            "statistics": result.statistics.as_dict(),
-            "config": {kind: choice.name for kind, choice in planner.config.choices.items()},
-        }
-        print(json.dumps(payload, indent=2))
+        status = Status.MEMORY_LIMIT
+    except KeyboardInterrupt:  # Ctrl-C while reading or grounding (searches catch their own)
+        status = Status.INTERRUPTED
     else:
-        print("\n".join(_plan_lines(result) + _statistics_lines(result)))
-    return exit_codes.for_status(result.status)
+        status = result.status
+    if result is not None:
+        _write_files(args, problem, result)
+    if args.json:
+        chosen = planner.config
+        config = {chosen.table_of(kind): chosen.choice(kind).name for kind in planner.kinds_used()}
+        where = str(domain) if domain is not None else None
+        document = report.document(result, status, clock.elapsed(), str(problem), where, config)
+        print(json.dumps(document, indent=2))
+    elif result is not None:
+        print("\n".join(report.text_lines(result)))
+    else:
+        print("\n".join(report.limit_lines(status, clock.elapsed())))
+    return exit_codes.for_status(status)
 
 
-def _report_forward(
-    planner: Planner, args: argparse.Namespace, problem: Path, result: ForwardResult
-) -> int:
+def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> None:
+    """The ``--tree`` and ``--plan-file`` outputs of a finished search."""
+    if args.tree:
+        if result.tree is None:
+            warnings.warn(
+                f"--tree: the {result.statistics.family} search keeps no tree to draw "
+                f"(only the world-model strategies do); {args.tree} not written",
+                stacklevel=1,
+            )
+        else:
+            from strips_framework.tree_dot import search_tree_to_dot
+
+            write_atomically(args.tree, search_tree_to_dot(result.tree, f"{problem.stem}: search tree"))
     if args.plan_file and result.plan is not None and result.cost is not None:
         write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs))
-    code = exit_codes.for_status(result.status)
-    if args.json:
-        payload = {
-            "problem": str(problem),
-            "status": result.status,
-            "limit": result.limit,
-            "exit_code": code,
-            "plan": list(result.plan) if result.plan is not None else None,
-            "plan_length": len(result.plan) if result.plan is not None else None,
-            "cost": result.cost,
-            "statistics": result.statistics.as_dict(),
-            "config": {kind: choice.name for kind, choice in planner.config.choices.items()},
-        }
-        print(json.dumps(payload, indent=2))
-    else:
-        print("\n".join(_forward_lines(result)))
-    return code
-
-
-def _report_limit(args: argparse.Namespace, status: str) -> int:
-    """A limit hit (or Ctrl-C) before the search began: while reading or grounding."""
-    code = exit_codes.for_status(status)
-    if args.json:
-        print(
-            json.dumps(
-                {
-                    "status": status,
-                    "limit": status.removesuffix("-limit") if status.endswith("-limit") else None,
-                    "exit_code": code,
-                    "plan": None,
-                    "statistics": None,
-                },
-                indent=2,
-            )
-        )
-    else:
-        print(f"status: {status} (before the search began)")
-    return code
 
 
 def _prove(planner: Planner, args: argparse.Namespace) -> int:

@@ -49,6 +49,9 @@ DEFAULT_CHOICES = {
 #: The strategy PDDL input gets when the config names none: what Fast Downward's users
 #: expect of ``strips solve DOMAIN PROBLEM`` (lazy greedy search with hFF).
 PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
+#: The config table that chooses a plugin kind, where it is not the kind itself: both
+#: kinds of strategy are named in ``[strategy]`` (so their names must not clash).
+TABLE_OF = {"ground-strategy": "strategy"}
 
 
 @frozen
@@ -108,21 +111,51 @@ class Config:
     def for_pddl(self) -> Config:
         """This config for PDDL input: the strategy defaults to :data:`PDDL_DEFAULT_STRATEGY`
         unless the config chose one."""
-        if "strategy" in self.chosen:
+        if "strategy" in self.chosen or self.choices["strategy"].name == PDDL_DEFAULT_STRATEGY:
             return self
         choices = {**self.choices, "strategy": Choice("strategy", PDDL_DEFAULT_STRATEGY)}
         return attrs.evolve(self, choices=choices)
 
+    def table_of(self, kind: str) -> str:
+        """The config table that chooses the implementation of plugin kind ``kind``."""
+        return TABLE_OF.get(kind, kind)
+
+    def choice(self, kind: str) -> Choice:
+        """What the config chose for plugin kind ``kind``."""
+        return self.choices[self.table_of(kind)]
+
+    def strategy_kind(self, registry: Registry) -> str:
+        """``"ground-strategy"`` when ``[strategy]`` names a ground-task strategy,
+        ``"strategy"`` when it names a world-model one."""
+        name = self.choices["strategy"].name
+        ground = name in registry.names("ground-strategy")
+        model = name in registry.names("strategy")
+        if ground and model:
+            raise PluginError(
+                f"strategy {name!r} is registered both as a world-model and as a "
+                "ground-task strategy; one plugin must rename its class"
+            )
+        if ground:
+            return "ground-strategy"
+        if not model:
+            available = ", ".join(sorted(registry.names("strategy") + registry.names("ground-strategy")))
+            raise PluginError(
+                f"{self.source}: search strategy {name!r} ('strategy.name') is not registered "
+                f"(available: {available}); 'strips plugins' lists them"
+            )
+        return "strategy"
+
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""
-        choice = self.choices[kind]
+        choice = self.choice(kind)
+        table = self.table_of(kind)
         try:
             registration = registry.get(kind, choice.name)
         except PluginError as error:
-            if kind not in self.chosen:
+            if table not in self.chosen:
                 raise  # a default: no key of the config file to point at
-            raise PluginError(f"{self.source}: '{kind}.name': {error}") from None
-        return _instantiate(registration.cls, choice.options, kind, self.source, registration)
+            raise PluginError(f"{self.source}: '{table}.name': {error}") from None
+        return _instantiate(registration.cls, choice.options, table, self.source, registration)
 
 
 _NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",

@@ -18,6 +18,8 @@
 
 from __future__ import annotations
 
+from strips_framework.result import Status
+
 SOLVED = 0
 INVALID_PLAN = 1
 INPUT_ERROR = 2
@@ -28,19 +30,19 @@ OUT_OF_TIME = 23
 PLUGIN_ERROR = 32
 INTERRUPTED = 130
 
-_BY_STATUS = {
-    "solved": SOLVED,
-    "unsolvable": UNSOLVABLE,
-    "exhausted-incomplete": UNSOLVED_INCOMPLETE,
-    "exhausted": UNSOLVED_INCOMPLETE,  # means-ends and model-astar: no proof of unsolvability
-    "expansion-limit": UNSOLVED_INCOMPLETE,
-    "node-limit": UNSOLVED_INCOMPLETE,
-    "memory-limit": OUT_OF_MEMORY,
-    "time-limit": OUT_OF_TIME,
-    "interrupted": INTERRUPTED,
+#: The exit code of a search that ended with each status.
+BY_STATUS: dict[Status, int] = {
+    Status.SOLVED: SOLVED,
+    Status.UNSOLVABLE: UNSOLVABLE,
+    Status.EXHAUSTED: UNSOLVED_INCOMPLETE,
+    Status.NODE_LIMIT: UNSOLVED_INCOMPLETE,
+    Status.EXPANSION_LIMIT: UNSOLVED_INCOMPLETE,
+    Status.MEMORY_LIMIT: OUT_OF_MEMORY,
+    Status.TIME_LIMIT: OUT_OF_TIME,
+    Status.INTERRUPTED: INTERRUPTED,
 }
 
 
-def for_status(status: str) -> int:
+def for_status(status: Status) -> int:
     """The exit code of a search that ended with ``status``."""
-    return _BY_STATUS[status]
+    return BY_STATUS[status]

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from strips_framework.proving import TheoremProver
     from strips_framework.search.components import (
         DifferenceExtractor,
+        GroundTaskStrategy,
         NodeEvaluator,
         RelevanceFilter,
         SearchStrategy,
@@ -80,12 +81,27 @@ def strips_register_evaluators() -> list[type[NodeEvaluator]]:
 
 @hookspec
 def strips_register_strategies() -> list[type[SearchStrategy]]:
-    """Return search-strategy classes.
+    """Return world-model search-strategy classes.
 
     A strategy searches from a problem's initial world model for a plan, using the prover,
     difference extractor, relevance filter and evaluator it is given, within the limits of
-    the config; it returns a :class:`~strips_framework.search.result.SearchResult` with the
-    plan (if any), the search tree and the paper's Table 2 statistics.
+    the config; it returns a :class:`~strips_framework.result.Result` with the plan (if
+    any), the search tree and the paper's Table 2 statistics
+    (:class:`~strips_framework.search.result.WorldModelStatistics`).
+    """
+
+
+@hookspec
+def strips_register_ground_strategies() -> list[type[GroundTaskStrategy]]:
+    """Return ground-task search-strategy classes.
+
+    A ground-task strategy searches the states of a
+    :class:`~strips_framework.grounding.task.GroundTask` (PDDL input, grounded) with the
+    estimator of the configured state heuristic; it returns a
+    :class:`~strips_framework.result.Result` with Fast Downward's counts
+    (:class:`~strips_framework.search.forward.result.ForwardStatistics`). The config names
+    it in the same ``[strategy]`` table as the world-model strategies, so its name must
+    differ from theirs.
     """
 
 

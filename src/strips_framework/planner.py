@@ -1,19 +1,20 @@
 """The typed facade over the plugin registry: load a problem, build the configured
-components, and search. The CLI, the tests and library users all go through it.
+components, and search. The CLI, the tests and library users all go through it (see
+``docs/api.md``).
 
-Two kinds of strategy meet here. World-model strategies (``means-ends``,
-``model-astar``) search first-order world models with a theorem prover and take a
-:class:`Problem`: a native ``.strips`` file, or a PDDL task translated to one. Strategies
-that declare ``works_on = "ground-task"`` (``astar``, ``lazy-gbfs``, ...) search the
-states of a :class:`GroundTask` with a state heuristic and take PDDL input, grounded.
+Two families of strategy meet here. World-model strategies (the ``strategy`` plugin kind:
+``means-ends``, ``model-astar``) search first-order world models with a theorem prover
+and take a :class:`Problem`: a native ``.strips`` file, or a PDDL task translated to one.
+Ground-task strategies (the ``ground-strategy`` kind: ``astar``, ``lazy-gbfs``, ...)
+search the states of a :class:`GroundTask` with a state heuristic and take PDDL input,
+grounded. Both return a :class:`~strips_framework.result.Result`.
 """
 
 from __future__ import annotations
 
-import time
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import attrs
 from attrs import frozen
@@ -23,49 +24,87 @@ from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.user_files import is_file
 from strips_framework.plugins import Registry
+from strips_framework.search.limits import Clock
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
     from strips_framework.pddl import PddlTask
     from strips_framework.problem import Problem
+    from strips_framework.progress import Progress
     from strips_framework.proving import TheoremProver
-    from strips_framework.search.forward.result import ForwardResult
-    from strips_framework.search.result import SearchResult
+    from strips_framework.result import Result
 
-GROUND_TASK = "ground-task"
+GROUND_STRATEGY = "ground-strategy"
 PDDL_SUFFIX = ".pddl"
 
 
 @frozen
 class Planner:
+    """A checked config and the registry its components come from.
+
+    Make one with :meth:`create`; :meth:`run` reads and solves a file, :meth:`solve` a
+    :class:`Problem` made in code, :meth:`solve_pddl` a :class:`PddlTask`.
+    """
+
     registry: Registry
     config: Config
+    #: Counts the search's scores for a progress line (the CLI sets it on a terminal).
+    progress: Progress | None = None
 
     @classmethod
-    def create(cls, config: Config | None = None, extra_plugins: Iterable[object] = ()) -> Planner:
-        """A planner whose config is checked at once and whole: every component the
-        strategy uses, and every one the config file names even if this strategy does not
-        use it (a ``[heuristic]`` typo is a typo with means-ends too), is registered with
-        valid options, and the implementations used fit together (each has the
-        capabilities the others require), so mistakes show before any problem is read."""
-        planner = cls(Registry.from_plugins(extra_plugins), config or Config.default())
-        for kind in dict.fromkeys((*planner.kinds_used(), *sorted(planner.config.chosen))):
-            planner.config.build(planner.registry, kind)
-        check_combination(planner.registry, planner.config, planner.kinds_used())
-        return planner
+    def create(
+        cls,
+        config: Config | Mapping[str, Any] | None = None,
+        extra_plugins: Iterable[object] = (),
+    ) -> Planner:
+        """A planner whose config is checked at once: every component the strategy uses is
+        registered, its options valid and the chosen implementations fit together (each has
+        the capabilities the others require), so mistakes show before any problem is read.
+
+        ``config`` is a :class:`Config`, or a mapping in the shape of the TOML file
+        (``{"strategy": "astar", "heuristic": {"name": "lmcut"}}``); ``None`` takes the
+        defaults, the same as ``strips solve`` without ``--config``.
+        """
+        if config is None:
+            config = Config.default()
+        elif not isinstance(config, Config):
+            config = Config.from_dict(dict(config), "<api>")
+        return cls(Registry.from_plugins(extra_plugins), config).checked()
+
+    def checked(self) -> Planner:
+        """This planner, after building each component it uses, and every one the config
+        file names even if this strategy does not use it (a ``[heuristic]`` typo is a typo
+        with means-ends too), and checking that the ones used fit together."""
+        kinds = list(self.kinds_used())
+        for table in sorted(self.config.chosen):
+            kind = self.config.strategy_kind(self.registry) if table == "strategy" else table
+            if kind not in kinds:
+                kinds.append(kind)
+        for kind in kinds:
+            self.config.build(self.registry, kind)
+        check_combination(self.registry, self.config, self.kinds_used())
+        return self
 
     def kinds_used(self) -> tuple[str, ...]:
         """The components the configured strategy uses (only these are built, so a
         forward search never loads the prover, and a means-ends search no heuristic)."""
         if self.searches_ground_tasks:
-            return ("strategy", "heuristic")
+            return (GROUND_STRATEGY, "heuristic")
         return ("strategy", "prover", "difference", "relevance", "evaluator")
 
     @property
     def searches_ground_tasks(self) -> bool:
         """True when the configured strategy searches ground tasks (PDDL input only)."""
-        strategy = self.registry.get("strategy", self.config.choices["strategy"].name)
-        return getattr(strategy.cls, "works_on", "problem") == GROUND_TASK
+        return self.config.strategy_kind(self.registry) == GROUND_STRATEGY
+
+    def for_pddl(self) -> Planner:
+        """The planner for PDDL input: the config's, with the strategy defaulting to
+        lazy greedy search (:data:`~strips_framework.config.PDDL_DEFAULT_STRATEGY`) unless
+        the config chose one, as ``strips solve`` does."""
+        config = self.config.for_pddl()
+        if config is self.config:
+            return self
+        return Planner(self.registry, config, self.progress).checked()
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
@@ -84,74 +123,92 @@ class Planner:
         return self.config.build(self.registry, "prover")
 
     def run(
-        self, problem_path: Path, domain_path: Path | None = None
-    ) -> SearchResult | ForwardResult:
+        self,
+        problem_path: Path | str,
+        domain_path: Path | str | None = None,
+        clock: Clock | None = None,
+    ) -> Result:
         """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
-        solve it with the configured strategy, whichever kind it is (a config's
-        :meth:`~Config.for_pddl` gives PDDL input its default strategy)."""
-        started = time.perf_counter()
+        solve it, with the defaults of ``strips solve``: PDDL input gets lazy greedy
+        search unless the config names a strategy. The time limit counts from the start
+        of ``clock`` (default: now)."""
+        clock = clock or Clock(self.config.limits.time)
+        problem_path = Path(problem_path)
+        domain_path = None if domain_path is None else Path(domain_path)
         if not is_pddl(problem_path, domain_path):
-            if self.searches_ground_tasks:
-                raise ConfigError(
-                    f"{self.config.source}: strategy '{self.config.choices['strategy'].name}' "
-                    f"searches ground tasks, which are made from PDDL input; {problem_path} is a "
-                    "native problem (first-order world models and axioms): use a world-model "
-                    "strategy such as 'means-ends' or 'model-astar'"
-                )
-            return self.solve(self.load(problem_path))
+            self._require_world_model(problem_path)
+            return self.solve(self.load(problem_path), clock)
         pddl = self.load_pddl(problem_path, domain_path)
-        parsed = time.perf_counter()
+        return self.for_pddl().solve_pddl(pddl, clock, parse_seconds=clock.elapsed())
+
+    def solve_pddl(
+        self, pddl: PddlTask, clock: Clock | None = None, parse_seconds: float = 0.0
+    ) -> Result:
+        """Solve a PDDL task with the configured strategy: a ground-task strategy searches
+        it grounded, a world-model strategy its translation to a :class:`Problem`.
+        (Call :meth:`for_pddl` first for ``strips solve``'s default strategy.)"""
+        clock = clock or Clock(self.config.limits.time)
         if not self.searches_ground_tasks:
             from strips_framework.pddl import to_problem
 
-            return self.solve(to_problem(pddl))
+            return self.solve(to_problem(pddl), clock)
         from strips_framework.grounding import ground
 
+        grounding_since = clock.elapsed()
         task = ground(pddl)
-        grounded = time.perf_counter()
-        result = self.solve_task(task, started)
+        searching_since = clock.elapsed()
+        result = self.solve_task(task, clock)
         statistics = attrs.evolve(
             result.statistics,
-            parse_seconds=parsed - started,
-            ground_seconds=grounded - parsed,
-            search_seconds=time.perf_counter() - grounded,  # the heuristic's set-up included
+            parse_seconds=parse_seconds,
+            ground_seconds=searching_since - grounding_since,
+            search_seconds=clock.elapsed() - searching_since,  # the heuristic's set-up included
         )
-        return attrs.evolve(result, statistics=statistics)
+        return attrs.evolve(result, statistics=statistics, seconds=clock.elapsed())
 
-    def solve(self, problem: Problem) -> SearchResult:
+    def solve(self, problem: Problem, clock: Clock | None = None) -> Result:
         """Search for a plan with the strategy, prover, difference extractor, relevance
-        filter and evaluator of the config (a world-model strategy; after checking that the prover handles what
-        the problem uses)."""
+        filter and evaluator of the config (a world-model strategy; after checking that
+        the prover handles what the problem uses)."""
+        self._require_world_model(problem.source)
         check_problem(problem, self.registry, self.config)
         build = self.config.build
         strategy = build(self.registry, "strategy")
-        if getattr(strategy, "works_on", "problem") == GROUND_TASK:
-            raise ConfigError(
-                f"{self.config.source}: strategy '{strategy.name}' searches ground tasks, "
-                "not first-order problems: give it PDDL input"
-            )
+        evaluator = build(self.registry, "evaluator")
         return strategy.search(
             problem,
             build(self.registry, "prover"),
             build(self.registry, "difference"),
             build(self.registry, "relevance"),
-            build(self.registry, "evaluator"),
+            evaluator if self.progress is None else self.progress.evaluator(evaluator),
             self.config.limits,
+            clock or Clock(self.config.limits.time),
         )
 
-    def solve_task(self, task: GroundTask, started: float | None = None) -> ForwardResult:
-        """Search ``task`` with the configured ground-task strategy and heuristic; the time
-        limit counts from ``started`` (default: now)."""
-        build = self.config.build
-        strategy = build(self.registry, "strategy")
-        if getattr(strategy, "works_on", "problem") != GROUND_TASK:
+    def solve_task(self, task: GroundTask, clock: Clock | None = None) -> Result:
+        """Search ``task`` with the configured ground-task strategy and heuristic; the
+        time limit counts from the start of ``clock`` (default: now)."""
+        if not self.searches_ground_tasks:
             raise ConfigError(
-                f"{self.config.source}: strategy '{strategy.name}' searches world models, "
-                "not ground tasks"
+                f"{self.config.source}: strategy '{self.config.choices['strategy'].name}' "
+                "searches world models, not ground tasks"
             )
-        heuristic = build(self.registry, "heuristic")
-        started = time.perf_counter() if started is None else started
-        return strategy.search_task(task, heuristic.for_task(task), self.config.limits, started)
+        strategy = self.config.build(self.registry, GROUND_STRATEGY)
+        heuristic = self.config.build(self.registry, "heuristic")
+        clock = clock or Clock(self.config.limits.time)
+        estimator = heuristic.for_task(task)
+        if self.progress is not None:
+            estimator = self.progress.estimator(estimator)
+        return strategy.search_task(task, estimator, self.config.limits, clock)
+
+    def _require_world_model(self, problem: Path | str) -> None:
+        if self.searches_ground_tasks:
+            raise ConfigError(
+                f"{self.config.source}: strategy '{self.config.choices['strategy'].name}' "
+                f"searches ground tasks, which are made from PDDL input; {problem} is a "
+                "native problem (first-order world models and axioms): use a world-model "
+                "strategy such as 'means-ends' or 'model-astar'"
+            )
 
 
 def is_pddl(problem_path: Path, domain_path: Path | None = None) -> bool:

@@ -31,6 +31,9 @@ DEFAULT_PLUGINS = ("strips_framework.builtins",)
 #: words for it in messages (singular, plural).
 KINDS = {
     "strategy": ("strips_register_strategies", "search strategy", "search strategies"),
+    "ground-strategy": (
+        "strips_register_ground_strategies", "ground-task strategy", "ground-task strategies"
+    ),
     "prover": ("strips_register_provers", "prover", "provers"),
     "difference": (
         "strips_register_difference_extractors", "difference extractor", "difference extractors"

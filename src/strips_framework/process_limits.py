@@ -3,7 +3,7 @@
 The searches watch ``[limits]`` themselves, but reading and grounding a large task, or a
 heuristic's set-up, can outgrow them too. So the CLI also caps the address space at the
 memory limit (allocations beyond it raise :class:`MemoryError`) and sets a wall-clock
-alarm that raises :class:`~strips_framework.search.forward.budget.LimitReached` wherever
+alarm that raises :class:`~strips_framework.search.limits.LimitReached` wherever
 the process is. A search catches both and reports the statistics it has; elsewhere the
 CLI turns them into exit codes 22 and 23.
 """
@@ -16,12 +16,12 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from types import FrameType
 
-from strips_framework.search.forward.budget import LimitReached
-from strips_framework.search.limits import Limits
+from strips_framework.result import Status
+from strips_framework.search.limits import LimitReached, Limits
 
 
 def _out_of_time(signum: int, frame: FrameType | None) -> None:
-    raise LimitReached("time")
+    raise LimitReached(Status.TIME_LIMIT)
 
 
 @contextmanager

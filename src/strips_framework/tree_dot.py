@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from strips_framework.logic.formulas import formula_to_str
 from strips_framework.search.node import Node
-from strips_framework.search.result import SearchResult
+from strips_framework.search.result import Tree
 from strips_framework.world import WorldModel
 
 _MAX_GOAL_TEXT = 60
@@ -32,8 +32,8 @@ def _goal_text(node: Node) -> str:
     return "\\l".join(_escape(g) for g in goals) + "\\l"
 
 
-def search_tree_to_dot(result: SearchResult, title: str = "STRIPS search tree") -> str:
-    on_path = {id(node) for node in result.solution_path()}
+def search_tree_to_dot(tree: Tree, title: str = "STRIPS search tree") -> str:
+    on_path = {id(node) for node in tree.solution_path()}
     lines = [
         "digraph search_tree {",
         f'  label="{_escape(title)}"; labelloc=t;',
@@ -41,15 +41,15 @@ def search_tree_to_dot(result: SearchResult, title: str = "STRIPS search tree") 
         '  edge [fontname="Helvetica", fontsize=9];',
     ]
     model_names: dict[WorldModel, str] = {}
-    for node in result.nodes:
+    for node in tree.nodes:
         # Models are numbered in order of appearance, as M0, M1, ... in the paper's figure.
         model = model_names.setdefault(node.model, f"M{len(model_names)}")
         label = f"n{node.id}: {model}\\l{_goal_text(node)}"
         style = ', color=red, penwidth=2' if id(node) in on_path else ""
-        if node is result.solution:
+        if node is tree.solution:
             style += ", peripheries=2"
         lines.append(f'  n{node.id} [label="{label}"{style}];')
-    for node in result.nodes:
+    for node in tree.nodes:
         if node.parent is None:
             continue
         attributes = []

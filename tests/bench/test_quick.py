@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
-from strips_framework.cli import main
+import argparse
 
-from .conftest import PUSH_ONE_BOX, read_rows
+from strips_framework.cli import main
+from strips_framework.plugins import Registry
+
+from .conftest import PUSH_ONE_BOX, ROOT, read_rows
+
+BLOCKS_P4 = ROOT / "examples" / "pddl" / "blocksworld" / "p4.pddl"
 
 
 def test_quick_form_runs_every_combination_and_prints_the_tables(tmp_path, capsys):
@@ -35,3 +40,23 @@ def test_quick_form_keeps_the_options_of_the_configs_own_choices(tmp_path, capsy
 def test_quick_form_reports_a_missing_problem(tmp_path, capsys):
     assert main(["bench", str(tmp_path / "none.strips")]) == 2
     assert "no such problem file" in capsys.readouterr().err
+
+
+def _quick_runs(*targets: str) -> list:
+    from strips_framework.bench import command
+
+    parser = argparse.ArgumentParser()
+    command.add_parser(parser.add_subparsers(dest="command"))
+    args = parser.parse_args(["bench", *targets, "--all"])
+    return command._quick_matrix(args).runs()
+
+
+def test_all_runs_ground_task_strategies_on_pddl_problems_only():
+    registry = Registry.from_plugins()
+    native = _quick_runs(str(PUSH_ONE_BOX))
+    world_model = len(registry.names("strategy"))
+    per_strategy = len(registry.names("evaluator")) * len(registry.names("prover"))
+    assert len(native) == world_model * per_strategy  # no ground-task strategy crossed
+    both = _quick_runs(str(PUSH_ONE_BOX), str(BLOCKS_P4))
+    ground = [r for r in both if r.config.name.split("+")[0] in registry.names("ground-strategy")]
+    assert ground and all(r.problem.path.suffix == ".pddl" for r in ground)

@@ -10,7 +10,7 @@ from collections import Counter
 from strips_framework.bench.configs import strips_command
 from strips_framework.cli import main
 
-from .conftest import PUSH_ONE_BOX, THREE_BOXES, fake, read_rows
+from .conftest import PUSH_ONE_BOX, ROOT, THREE_BOXES, fake, read_rows
 
 SMALL = f"""
 repetitions = 2
@@ -148,6 +148,44 @@ one = ["{PUSH_ONE_BOX}"]
     hung = subprocess.run(["pgrep", "-f", f"fake_planner.py hang {PUSH_ONE_BOX}"],
                           check=False, capture_output=True, text=True).stdout.split()
     assert hung == []  # the hung child was killed with the runner
-    matrix.write_text(matrix.read_text().replace("time = 60", "time = 1"))
+    # 'slow' has no row yet, so its command may change (not 'quick''s, nor the limits).
+    matrix.write_text(matrix.read_text().replace(fake("hang"), fake("solve")))
     assert main(["bench", str(matrix), "-o", str(out), "--resume", "--no-progress"]) == 0
     assert Counter(row["config"] for row in read_rows(out)) == {"quick": 1, "slow": 1}
+
+
+def test_the_planner_stops_itself_within_the_matrixs_time_limit(write_matrix, tmp_path):
+    """The matrix's time limit reaches the planner (a little less, for start-up), so a
+    long search ends by its own limit, with its statistics, not by SIGKILL."""
+    five_goals = ROOT / "examples" / "robot-world" / "five-goals.strips"
+    matrix = write_matrix(f"""
+[limits]
+time = 8
+memory = 1024
+[problems]
+hard = ["{five_goals}"]
+[configs.bfs]
+evaluator = "breadth-first"
+""")
+    out = tmp_path / "results.jsonl"
+    assert main(["bench", str(matrix), "-o", str(out), "--no-progress"]) == 0
+    (row,) = read_rows(out)
+    assert row["status"] == "timeout" and row["exit_code"] == 23, row["cause"]
+    assert row["cause"] == "the planner's own time limit (exit code 23)"
+    assert row["statistics"]["nodes"] > 0 and row["planner_status"] == "time-limit"
+
+
+def test_resume_refuses_a_matrix_whose_configs_or_limits_changed(write_matrix, tmp_path, capsys):
+    out = tmp_path / "results.jsonl"
+    args = ["-o", str(out), "--no-progress", "--jobs", "2"]
+    assert main(["bench", str(write_matrix(SMALL)), *args]) == 0
+    assert len(read_rows(out)) == 12
+    changed_limits = SMALL.replace("time = 30", "time = 20")
+    assert main(["bench", str(write_matrix(changed_limits)), *args, "--resume"]) == 2
+    assert "cannot resume: the limits of 'paper' changed" in capsys.readouterr().err
+    changed_options = SMALL.replace("max_goals = 1", "max_goals = 2")
+    assert main(["bench", str(write_matrix(changed_options)), *args, "--resume"]) == 2
+    assert "cannot resume: the configuration of 'short-goals' changed" in capsys.readouterr().err
+    more = SMALL.replace('["paper", "goal-count"]', '["paper", "goal-count", "breadth-first"]')
+    assert main(["bench", str(write_matrix(more)), *args, "--resume"]) == 0  # only added
+    assert len(read_rows(out)) == 16

@@ -8,6 +8,8 @@ import sys
 from pathlib import Path
 
 DATA = Path(__file__).parents[1] / "pddl" / "data"
+BLOCKS = Path(__file__).parents[2] / "examples" / "pddl" / "blocksworld"
+KIT = Path(__file__).parents[2] / "src" / "strips_framework" / "testing" / "tasks"
 IPC = Path(__file__).parents[3] / "shared" / "bench" / "ipc"
 
 SCRIPT = """
@@ -32,7 +34,10 @@ def grounded_with_seed(seed: str, files: list[Path]) -> str:
 
 
 def test_same_grounding_whatever_the_hash_seed():
-    files = [DATA / "rooms-domain.pddl", DATA / "rooms-2.pddl"]
+    files = [DATA / "rooms-domain.pddl", DATA / "rooms-2.pddl",
+             BLOCKS / "domain.pddl", BLOCKS / "p4.pddl",  # enough lines without ../shared
+             KIT / "gripper-domain.pddl", KIT / "gripper-3.pddl",
+             KIT / "delivery-domain.pddl", KIT / "delivery-2.pddl"]
     depot = IPC / "depot"
     if depot.is_dir():
         files += [depot / "domain.pddl", depot / "task02.pddl"]

@@ -10,20 +10,12 @@ from strips_framework.pddl import to_problem
 from strips_framework.pddl.validate import validate_plan
 
 
-def ipc_steps(plan) -> list[str]:
-    steps = []
-    for instance in plan:
-        args = " ".join(str(arg) for arg in instance.arguments())
-        steps.append(f"({instance.schema_name} {args})")
-    return steps
-
-
 def test_means_ends_solves_a_small_blocks_world(load, make_planner):
     task = load("blocks-domain.pddl", "blocks-3.pddl")
     problem = to_problem(task)
     result = make_planner(strategy="means-ends", prover="resolution").solve(problem)
     assert result.solved
-    check = validate_plan(task, ipc_steps(result.plan))
+    check = validate_plan(task, list(result.plan))
     assert check.valid, check.message
 
 
@@ -53,7 +45,7 @@ def test_derived_predicates_become_axioms_the_prover_uses(write_task, make_plann
     assert ("above", 2) not in problem.primitive_predicates
     result = make_planner(strategy="means-ends", prover="resolution").solve(problem)
     assert result.solved
-    assert validate_plan(task, ipc_steps(result.plan)).valid
+    assert validate_plan(task, list(result.plan)).valid
 
 
 def test_negative_preconditions_become_complement_predicates(load, make_planner):
@@ -65,7 +57,7 @@ def test_negative_preconditions_become_complement_predicates(load, make_planner)
     assert ("not:dry", paint.parameters[0]) in paint.add_list
     result = make_planner(strategy="means-ends", prover="resolution").solve(problem)
     assert result.solved
-    steps = ipc_steps(result.plan)
+    steps = list(result.plan)
     assert steps == ["(switch-off a)", "(paint a)", "(wait a)", "(switch-on a)"]
     assert validate_plan(task, steps).valid
 

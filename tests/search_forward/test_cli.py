@@ -37,8 +37,8 @@ def test_solve_writes_an_ipc_plan_and_prints_the_figures(tmp_path, capsys):
     assert lines[-1] == f"; cost = {len(lines) - 1} (unit cost)"
     out = capsys.readouterr().out.splitlines()
     assert out[: len(lines) - 1] == lines[:-1]
-    assert "status: solved" in out
-    assert any(line.startswith("expanded: ") for line in out)
+    assert "; status: solved" in out
+    assert any(line.startswith("; expanded: ") for line in out)
     assert main(["validate", str(BLOCKS / "domain.pddl"), str(BLOCKS / "p4.pddl"), str(plan)]) == 0
 
 
@@ -72,7 +72,7 @@ def test_json_gives_plan_status_limit_and_statistics(capsys):
 def test_unsolvable_task_exits_11(capsys):
     assert main(["solve", str(DATA / "domain.pddl"), str(DATA / "dead-end.pddl"),
                  "--config", str(FAST)]) == exit_codes.UNSOLVABLE
-    assert "status: unsolvable" in capsys.readouterr().out
+    assert "; status: unsolvable" in capsys.readouterr().out
 
 
 def test_expansion_limit_exits_12_and_json_names_the_limit(tmp_path, capsys):

@@ -171,9 +171,9 @@ def test_astar_with_an_admissible_heuristic_finds_optimal_plans(task_and_costs, 
     a plan of the optimal cost, or proves the task unsolvable."""
     task, optimal = task_and_costs
     registry = Registry.from_plugins()
-    if "astar" not in registry.names("strategy"):
+    if "astar" not in registry.names("ground-strategy"):
         pytest.skip("no forward A* strategy registered")
-    strategy = registry.get("strategy", "astar").cls()
+    strategy = registry.get("ground-strategy", "astar").cls()
     estimator = HEURISTICS[heuristic]().for_task(task)
     result = strategy.search_task(task, estimator, Limits(time=60))
     if optimal[task.init] == math.inf:

@@ -87,6 +87,8 @@ def bench(args: argparse.Namespace) -> int:
         output = Path(f"{args.targets[0].stem}-results.jsonl")
     sink = ResultsFile(output, args.resume) if output else RowList()
     specs = matrix.runs()
+    if isinstance(sink, ResultsFile):
+        sink.check_unchanged(specs)
     executor = DaskExecutor(args.scheduler) if args.scheduler else LocalExecutor(args.jobs)
     before = len(sink.done)
     print(f"{len(specs)} runs in the matrix, {before} already done"
@@ -117,7 +119,9 @@ def _quick_matrix(args: argparse.Namespace) -> Matrix:
     from strips_framework.plugins import Registry
 
     """The matrix the quick form's options describe: its problems, the product of the
-    named (or, with --all, every registered) strategies, evaluators and provers."""
+    named (or, with --all, every registered) strategies, evaluators and provers; --all
+    takes the ground-task strategies only when a problem is PDDL (the matrix runs them on
+    the PDDL problems alone)."""
     registry = Registry.from_plugins()
     product: dict[str, Any] = {}
     base_config = Config.from_file(args.config) if args.config else Config.default()
@@ -129,6 +133,8 @@ def _quick_matrix(args: argparse.Namespace) -> Matrix:
             product[kind] = [name.strip() for name in given.split(",") if name.strip()]
         else:
             product[kind] = registry.names(kind) if args.all else [base_config.choices[kind].name]
+    if args.all and not args.strategies and any(p.suffix == ".pddl" for p in args.targets):
+        product["strategy"] += registry.names("ground-strategy")
     missing = [str(path) for path in args.targets if not is_file(path)]
     if missing:
         raise ConfigError(f"no such problem file: {', '.join(missing)}")

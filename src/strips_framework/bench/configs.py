@@ -13,6 +13,7 @@ memory / 23 out of time):
 from __future__ import annotations
 
 import sys
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -45,6 +46,13 @@ def strips_command(*args: str) -> list[str]:
     return [sys.executable, *STRIPS, *args]
 
 
+def planner_time_limit(wall_limit: float) -> float:
+    """The ``[limits] time`` our planner gets under a matrix's wall-clock limit: less by a
+    fifth, at most 5 s (interpreter start-up, writing the result), so that it stops itself
+    and reports its statistics and exit code 23 instead of being killed without them."""
+    return wall_limit - min(0.2 * wall_limit, 5.0)
+
+
 class AnyProblemConfig:
     """What most configurations share: they take every problem, need nothing installed,
     read the problem where it is and write the plan to the run's ``plan.txt``."""
@@ -63,21 +71,45 @@ class AnyProblemConfig:
 
 @frozen
 class PlannerConfig(AnyProblemConfig):
-    """``strips solve PROBLEM --json`` with ``data`` written out as its ``strips.toml``."""
+    """``strips solve PROBLEM --json`` with ``data`` written out as its ``strips.toml``, its
+    time limit no longer than the matrix's allows (:func:`planner_time_limit`)."""
 
     name: str
     data: dict[str, Any]
 
-    def command(self, files: RunFiles) -> list[str]:
+    def command(self, files: RunFiles, time_limit: float) -> list[str]:
         config = files.folder / "strips.toml"
-        config.write_text(tomli_w.dumps(self.data), encoding="utf-8")
+        limits = dict(self.data.get("limits", {}))
+        limits["time"] = min(limits.get("time", time_limit), planner_time_limit(time_limit))
+        data = {**self.data, "limits": limits}
+        config.write_text(tomli_w.dumps(data), encoding="utf-8")
         return strips_command(
             "solve", str(files.problem), "--json", "--plan-file", str(files.plan),
             "--config", str(config),
         )
 
+    def accepts(self, problem: ProblemFile) -> bool:
+        """Every problem, but PDDL only for a ground-task strategy (native problems are
+        first-order world models, which are not grounded)."""
+        return problem.path.suffix == PDDL or not searches_ground_tasks(self.data)
+
     def describe(self) -> dict[str, Any]:
         return {"kind": "planner", "strips.toml": self.data}
+
+
+@cache
+def ground_strategy_names() -> frozenset[str]:
+    """The registered ground-task strategies (looked up once per process)."""
+    from strips_framework.plugins import Registry
+
+    return frozenset(Registry.from_plugins().names("ground-strategy"))
+
+
+def searches_ground_tasks(data: dict[str, Any]) -> bool:
+    """True when the ``strips.toml`` ``data`` names a ground-task strategy."""
+    strategy = data.get("strategy", {})
+    name = strategy.get("name") if isinstance(strategy, dict) else strategy
+    return name in ground_strategy_names()
 
 
 @frozen
@@ -87,7 +119,7 @@ class CommandConfig(AnyProblemConfig):
     name: str
     template: tuple[str, ...]
 
-    def command(self, files: RunFiles) -> list[str]:
+    def command(self, files: RunFiles, time_limit: float) -> list[str]:
         values = {
             "python": sys.executable, "problem": str(files.problem),
             "domain": str(files.domain or ""), "plan": str(files.plan),
@@ -111,7 +143,7 @@ class AnchorConfig:
     #: pyperplan writes its plan beside the problem: each run works on private copies.
     copies_inputs = True
 
-    def command(self, files: RunFiles) -> list[str]:
+    def command(self, files: RunFiles, time_limit: float) -> list[str]:
         start = anchors.planner_command(self.planner)
         if start is None:
             raise FileNotFoundError(anchors.missing_note(self.planner))

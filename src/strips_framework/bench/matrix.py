@@ -145,7 +145,8 @@ class Matrix:
             refused = [p.name for p in self.problems if not config.accepts(p)]
             if refused:
                 notes.append(
-                    f"configuration {config.name!r} runs PDDL problems only: "
+                    f"configuration {config.name!r} runs PDDL problems only (a ground-task "
+                    "strategy, or an anchor planner): "
                     f"{len(refused)} problem(s) skipped"
                 )
         return notes

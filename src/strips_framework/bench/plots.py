@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt
 from strips_framework.bench.summary import Task, configs
 
 FORMATS = ("png", "svg")
-METRICS = {"time": "time (s)", "expansions": "expansions"}
+METRICS = {"time": "wall-clock time (s, start-up included)", "expansions": "expansions"}
 
 
 def _save(figure: plt.Figure, stem: Path) -> list[Path]:
@@ -41,7 +41,7 @@ def cactus(found: Sequence[Task], time_limit: float, stem: Path) -> list[Path]:
         ys = [0, *range(1, solved + 1), solved] if times else [0]
         axes.step(xs, ys, where="post", label=f"{name} ({solved}/{total})", linewidth=1.8)
     axes.set_xscale("log")
-    axes.set_xlabel("time per problem (s, log scale)")
+    axes.set_xlabel("wall-clock time per problem (s, start-up included, log scale)")
     axes.set_ylabel("problems solved")
     axes.set_ylim(0, total + 0.5)
     axes.axvline(time_limit, color="grey", linestyle=":", linewidth=1)

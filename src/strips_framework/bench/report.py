@@ -47,7 +47,8 @@ def write_report(
             f"{len(rows)} runs, {len({t.problem for t in found})} problems, "
             f"{len(names)} configurations; time limit {time_limit:g} s. A problem counts as "
             "solved when every repetition found a plan that the validator did not reject. "
-            "Times are the planner's own where it reports one, else wall clock."
+            "Times are the wall clock of each run's process, start-up included, for every "
+            "configuration; 'median planner time' is the planner's own where it reports one."
         ),
         "",
         summary,

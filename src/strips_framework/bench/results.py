@@ -9,12 +9,15 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from strips_framework.errors import InputError
 from strips_framework.user_files import read_text
+
+if TYPE_CHECKING:
+    from strips_framework.bench.matrix import RunSpec
 
 
 def read_rows(path: Path) -> list[dict[str, Any]]:
@@ -45,6 +48,8 @@ class ResultsFile:
     def __init__(self, path: Path, resume: bool) -> None:
         self.path = path
         self.done: set[str] = set()
+        #: Per configuration name, what the file's rows say it was: its spec and limits.
+        self.recorded: dict[str, tuple[Any, Any]] = {}
         if path.exists() and path.stat().st_size and not resume:
             raise InputError(
                 str(path), None, None,
@@ -55,10 +60,33 @@ class ResultsFile:
             end = 0
             for end, row in _complete_rows(lines, str(path)):
                 self.done.add(row["key"])
+                self.recorded.setdefault(
+                    row.get("config"), (row.get("config_spec"), row.get("limits"))
+                )
             with path.open("r+b") as file:
                 file.truncate(end)  # drop a torn last line
         path.parent.mkdir(parents=True, exist_ok=True)
         self._file = path.open("a", encoding="utf-8")
+
+    def check_unchanged(self, specs: Iterable[RunSpec]) -> None:
+        """Refuse to resume when a configuration of the matrix ran under another spec or
+        other limits than the file's rows record: the rows would not be comparable."""
+        for spec in specs:
+            recorded = self.recorded.get(spec.config.name)
+            if recorded is None:
+                continue
+            limits = {"time": spec.limits.time, "memory_mib": spec.limits.memory}
+            for what, was, now in (
+                ("configuration", recorded[0], spec.config.describe()),
+                ("limits", recorded[1], limits),
+            ):
+                if was != json.loads(json.dumps(now)):  # as a row holds it
+                    raise InputError(
+                        str(self.path), None, None,
+                        f"cannot resume: the {what} of {spec.config.name!r} changed since "
+                        f"these rows were written (then {json.dumps(was, sort_keys=True)}, "
+                        f"now {json.dumps(now, sort_keys=True)}); write to another --output",
+                    )
 
     def write(self, row: dict[str, Any]) -> bool:
         """Append ``row`` unless its run is already in the file; ``False`` if it was."""

@@ -50,7 +50,7 @@ def _execute_in(spec: RunSpec, folder: Path, live: LiveGroups | None) -> dict[st
     env = {**os.environ, "PYTHONHASHSEED": str(spec.seed)}
     row = _base_row(spec)
     try:
-        command = spec.config.command(files)
+        command = spec.config.command(files, spec.limits.time)
         outcome = run_limited(command, folder, env, spec.limits.time, spec.limits.memory, live)
     except OSError as error:  # the planner is missing or cannot start on this machine
         return row | {"status": CRASH, "cause": f"cannot start: {error}"}
@@ -112,7 +112,7 @@ def _measurements(
     return {
         "exit_code": outcome.exit_code,
         "wall_seconds": round(outcome.wall_seconds, 4),
-        "planner_seconds": _planner_seconds(statistics),
+        "planner_seconds": _planner_seconds(payload or {}),
         "proving_seconds": statistics.get("proving_seconds"),
         "expanded": expanded,
         "peak_memory_mib": round(outcome.peak_memory_kib / 1024, 1),
@@ -123,11 +123,13 @@ def _measurements(
     }
 
 
-def _planner_seconds(statistics: dict[str, Any]) -> float | None:
-    """The planner's own time: its ``seconds``, else the sum of its phases
-    (``parse_seconds``, ``ground_seconds``, ``search_seconds`` of forward search)."""
-    if "seconds" in statistics:
-        return statistics["seconds"]
+def _planner_seconds(payload: dict[str, Any]) -> float | None:
+    """The planner's own time: the ``seconds`` of a ``strips solve --json`` document (or
+    of its statistics), else the sum of the phases its statistics report."""
+    statistics = payload.get("statistics") or {}
+    for found in (payload, statistics):
+        if "seconds" in found:
+            return found["seconds"]
     phases = [v for k, v in statistics.items() if k.endswith("_seconds") and k != "proving_seconds"]
     return round(sum(phases), 4) if phases else None
 

@@ -2,9 +2,10 @@
 
 A *task* is one problem under one configuration; its repetitions are folded into one
 outcome: solved when every repetition found a plan that the validator did not reject,
-with the median of each measurement. Time is the planner's own (``strips solve`` reports
-it; search and proving without interpreter start-up) and the wall clock of the child
-where a planner reports none (anchors, commands).
+with the median of each measurement. Time is the wall clock of the child process, start-up
+included, for every configuration alike (ours, anchors, commands), so that columns
+compare like with like; the planner's own time (``strips solve`` reports it, interpreter
+start-up excluded) has a column of its own, empty for planners that report none.
 """
 
 from __future__ import annotations
@@ -16,11 +17,12 @@ from typing import Any
 
 from attrs import frozen
 
-from strips_framework.bench.runner import FAILURES, SOLVED
+from strips_framework.bench.runner import FAILURES, SOLVED, UNSOLVED
 
 COLUMNS = (
-    "config", "solved", "timeout", "memout", "crash", "invalid", "total time (s)",
-    "median time (s)", "median expansions", "median plan length", "proving share",
+    "config", "solved", "unsolved", "timeout", "memout", "crash", "invalid",
+    "total wall time (s)", "median wall time (s)", "median planner time (s)",
+    "median expansions", "median plan length", "proving share",
 )
 
 
@@ -56,7 +58,7 @@ def tasks(rows: Sequence[dict[str, Any]]) -> list[Task]:
         status = next((run["status"] for run in runs if run["status"] != SOLVED), SOLVED)
         found.append(Task(
             problem, config, solved, "invalid" if invalid else status,
-            _median([_time(run) for run in runs]),
+            _median([run.get("wall_seconds") for run in runs]),
             _median([run.get("expanded") for run in runs]),
             _median([run.get("plan_length") for run in runs]),
             _median([run.get("proving_seconds") for run in runs]),
@@ -64,11 +66,6 @@ def tasks(rows: Sequence[dict[str, Any]]) -> list[Task]:
             invalid,
         ))
     return found
-
-
-def _time(row: dict[str, Any]) -> float | None:
-    planner = row.get("planner_seconds")
-    return planner if planner is not None else row.get("wall_seconds")
 
 
 def configs(found: Sequence[Task]) -> list[str]:
@@ -88,10 +85,11 @@ def summary_rows(found: Sequence[Task]) -> list[list[str]]:
         table.append([
             config,
             f"{len(solved)}/{len(mine)}",
-            *(str(sum(task.status == status for task in mine)) for status in FAILURES),
+            *(str(sum(task.status == status for task in mine)) for status in (UNSOLVED, *FAILURES)),
             str(sum(task.invalid for task in mine)),
             _cell(sum(times) if times else None, ".3f"),
             _cell(_median(times), ".3f"),
+            _cell(_median([task.planner_seconds for task in solved]), ".3f"),
             _cell(_median([task.expanded for task in solved]), "g"),
             _cell(_median([task.plan_length for task in solved]), "g"),
             _cell(share, ".0%"),
@@ -109,7 +107,8 @@ def markdown(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
 
 
 def per_problem_rows(found: Sequence[Task]) -> tuple[list[str], list[list[str]]]:
-    """A problem x configuration table: time, expansions and plan length, or the status."""
+    """A problem x configuration table: wall time, expansions and plan length, or the
+    status."""
     names = configs(found)
     by_key = {(task.problem, task.config): task for task in found}
     rows = []

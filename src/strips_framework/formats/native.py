@@ -475,3 +475,15 @@ class NativeLoader:
 
     def load(self, path: Path) -> Problem:
         return _Reader(str(path)).read(read_blocks(path, str(path)))
+
+
+def parse_problem(text: str, source: str = "<text>") -> Problem:
+    """A problem from native-format text made in code; ``source`` stands for the file in
+    messages. ``include`` is refused: it names a file relative to the including one."""
+    blocks = _split(text, source)
+    for block in blocks:
+        if block.keyword == "include":
+            where = block.header
+            raise InputError(source, where.line, where.column, "'include' needs a file: load "
+                             "the problem with Planner.load, or paste the included text")
+    return _Reader(source).read(blocks)

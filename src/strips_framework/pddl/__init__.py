@@ -9,13 +9,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from strips_framework.pddl.files import find_domain, load_task
+from strips_framework.pddl.files import find_domain, load_task, parse_task
 from strips_framework.pddl.task import PddlTask
 
 if TYPE_CHECKING:
     from strips_framework.problem import Problem
 
-__all__ = ["PddlTask", "find_domain", "load_task", "to_problem"]
+__all__ = ["PddlTask", "find_domain", "load_task", "parse_task", "to_problem"]
 
 
 def to_problem(task: PddlTask) -> Problem:

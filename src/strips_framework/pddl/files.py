@@ -32,6 +32,19 @@ def load_task(domain_path: Path, problem_path: Path) -> PddlTask:
     return PddlTask(domain, problem, str(domain_path), str(problem_path))
 
 
+def parse_task(
+    domain_text: str,
+    problem_text: str,
+    domain_name: str = "<domain>",
+    problem_name: str = "<problem>",
+) -> PddlTask:
+    """Read and check a domain and a problem given as text (made in code, or written by
+    another tool); ``domain_name`` and ``problem_name`` stand for the files in messages."""
+    domain = read_domain(Source(domain_text, domain_name))
+    problem = read_problem(Source(problem_text, problem_name), domain)
+    return PddlTask(domain, problem, domain_name, problem_name)
+
+
 def domain_candidates(problem_path: Path) -> list[Path]:
     """Where the domain of ``problem_path`` may be, most specific first: the naming rules of
     Fast Downward (``domain.pddl``, ``p01-domain.pddl``, ``domain_p01.pddl``, ...) and of the

@@ -14,9 +14,9 @@ if TYPE_CHECKING:
     from strips_framework.logic.clauses import Clause
     from strips_framework.problem import OperatorSchema, Problem
     from strips_framework.proving import ProofResult, TheoremProver
-    from strips_framework.search.limits import Limits
+    from strips_framework.result import Result
+    from strips_framework.search.limits import Clock, Limits
     from strips_framework.search.node import Difference, Node, RelevantInstance
-    from strips_framework.search.result import SearchResult
     from strips_framework.world import InitialModel, WorldModel
 
 
@@ -57,6 +57,8 @@ class NodeEvaluator(Protocol):
 
 
 class SearchStrategy(Protocol):
+    """A world-model strategy (the ``strategy`` plugin kind)."""
+
     name: ClassVar[str]
 
     def search(
@@ -67,8 +69,12 @@ class SearchStrategy(Protocol):
         relevance: RelevanceFilter,
         evaluator: NodeEvaluator,
         limits: Limits,
-    ) -> SearchResult:
-        """Search for a plan for ``problem``."""
+        clock: Clock | None = None,
+    ) -> Result:
+        """Search for a plan for ``problem``; the time limit counts from the start of
+        ``clock`` (the planner's, started when it began reading; default: now), and a
+        :class:`~strips_framework.search.limits.LimitReached` raised anywhere inside ends
+        the search with its status and the statistics so far."""
         ...
 
 
@@ -92,4 +98,24 @@ class StateHeuristic(Protocol):
 
     def for_task(self, task: GroundTask) -> StateEstimator:
         """Precompute what the heuristic needs for ``task``."""
+        ...
+
+
+class GroundTaskStrategy(Protocol):
+    """A strategy over ground tasks (the ``ground-strategy`` plugin kind): forward search
+    over the states of a task grounded from PDDL input."""
+
+    name: ClassVar[str]
+    #: True when running out of states proves the task unsolvable.
+    complete: ClassVar[bool]
+
+    def search_task(
+        self,
+        task: GroundTask,
+        estimator: StateEstimator,
+        limits: Limits,
+        clock: Clock | None = None,
+    ) -> Result:
+        """Search ``task`` with ``estimator`` (the configured heuristic bound to it); the
+        time limit counts from the start of ``clock``, as for :class:`SearchStrategy`."""
         ...

@@ -1,8 +1,13 @@
-"""Resource limits of one search (the ``[limits]`` table of the config)."""
+"""Resource limits of one run (the ``[limits]`` table of the config), the clock they are
+measured by, and the exception that ends a search when one runs out."""
 
 from __future__ import annotations
 
-from attrs import field, frozen, validators
+import time
+
+from attrs import define, field, frozen, validators
+
+from strips_framework.result import LIMIT_STATUS, Status
 
 #: The largest time (seconds) and memory (MiB) limits: what ``setitimer`` and
 #: ``setrlimit`` accept on every platform the CLI runs on (a larger value would overflow
@@ -29,3 +34,40 @@ class Limits:
     effort: int = field(default=300, validator=_positive_int)
     expansions: int | None = field(default=None, validator=validators.optional(_positive_int))
     memory: int | None = field(default=None, validator=_memory)
+
+
+class LimitReached(Exception):
+    """Raised inside a run when a limit ends it (by a search's own checks, or by the
+    CLI's process alarm wherever the process is); every strategy catches it and reports
+    the statistics it has."""
+
+    def __init__(self, status: Status) -> None:
+        super().__init__(status)
+        self.status = status
+
+    @classmethod
+    def of(cls, key: str) -> LimitReached:
+        """The exception for the ``[limits]`` key ``key``."""
+        return cls(LIMIT_STATUS[key])
+
+
+@define
+class Clock:
+    """The run's wall clock: started by the planner when it begins reading the input, so
+    reading, grounding and search share the one ``[limits] time`` allowance."""
+
+    seconds: float
+    started: float = field(factory=time.perf_counter)
+
+    def elapsed(self) -> float:
+        return time.perf_counter() - self.started
+
+    @property
+    def deadline(self) -> float:
+        """The :func:`time.perf_counter` value at which the time limit runs out."""
+        return self.started + self.seconds
+
+    def check(self) -> None:
+        """Raise :class:`LimitReached` when the time limit has run out."""
+        if time.perf_counter() > self.started + self.seconds:
+            raise LimitReached(Status.TIME_LIMIT)

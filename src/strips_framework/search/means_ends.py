@@ -25,8 +25,8 @@ if TYPE_CHECKING:
         NodeEvaluator,
         RelevanceFilter,
     )
-    from strips_framework.search.limits import Limits
-    from strips_framework.search.result import SearchResult
+    from strips_framework.result import Result
+    from strips_framework.search.limits import Clock, Limits
 
 
 @frozen
@@ -53,10 +53,13 @@ class MeansEndsSearch:
         relevance: RelevanceFilter,
         evaluator: NodeEvaluator,
         limits: Limits,
-    ) -> SearchResult:
+        clock: Clock | None = None,
+    ) -> Result:
         from strips_framework.search.goal_prover import GoalProver
+        from strips_framework.search.limits import Clock
         from strips_framework.search.means_ends_run import MeansEndsRun
 
         run = MeansEndsRun(self.max_goals, problem, GoalProver(problem, prover, limits.effort),
-                           differences, relevance, evaluator, limits)
+                           differences, relevance, evaluator, limits,
+                           clock or Clock(limits.time))
         return run.search()

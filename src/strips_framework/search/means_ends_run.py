@@ -15,10 +15,10 @@ from strips_framework.search.components import (
     RelevanceFilter,
 )
 from strips_framework.search.goal_prover import GoalProver
-from strips_framework.search.limits import Limits
+from strips_framework.result import Result, Status
+from strips_framework.search.limits import Clock, LimitReached, Limits
 from strips_framework.search.node import Goal, Node
-from strips_framework.search.result import EXHAUSTED, INTERRUPTED, SOLVED, SearchResult
-from strips_framework.search.tree import LimitReached, SearchTree
+from strips_framework.search.tree import SearchTree
 from strips_framework.world import WorldModel
 
 
@@ -34,19 +34,20 @@ class MeansEndsRun:
         relevance: RelevanceFilter,
         evaluator: NodeEvaluator,
         limits: Limits,
+        clock: Clock,
     ) -> None:
         self.max_goals = max_goals
         self.goal_prover = goal_prover
         self.differences = differences
         self.relevance = relevance.for_problem(problem.operators, goal_prover.initial)
         self.evaluator = evaluator
-        self.tree = SearchTree(limits, goal_prover)
+        self.tree = SearchTree(limits, goal_prover, clock)
         self.queue: list[tuple[float, int, Node]] = []
         self.pushes = 0
         self.seen: set[tuple[WorldModel, tuple[Goal, ...]]] = set()
         self.top_goal = Goal(problem.goal)
 
-    def search(self) -> SearchResult:
+    def search(self) -> Result:
         try:
             solution = self._make(self.goal_prover.root_model(), (self.top_goal,), None, ())
             while solution is None and self.queue:
@@ -56,8 +57,8 @@ class MeansEndsRun:
         except LimitReached as limit:
             return self.tree.result(limit.status, None)
         except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
-            return self.tree.result(INTERRUPTED, None)
-        return self.tree.result(SOLVED if solution else EXHAUSTED, solution)
+            return self.tree.result(Status.INTERRUPTED, None)
+        return self.tree.result(Status.SOLVED if solution else Status.EXHAUSTED, solution)
 
     def _push(self, node: Node) -> None:
         self.pushes += 1

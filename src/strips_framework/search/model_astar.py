@@ -32,9 +32,9 @@ if TYPE_CHECKING:
         RelevanceFilter,
     )
     from strips_framework.search.goal_prover import GoalProver
-    from strips_framework.search.limits import Limits
+    from strips_framework.result import Result
+    from strips_framework.search.limits import Clock, Limits
     from strips_framework.search.node import Node
-    from strips_framework.search.result import SearchResult
     from strips_framework.world import WorldModel
 
 
@@ -63,14 +63,16 @@ class ModelAStarSearch:
         relevance: RelevanceFilter,
         evaluator: NodeEvaluator,
         limits: Limits,
-    ) -> SearchResult:
+        clock: Clock | None = None,
+    ) -> Result:
         # Imported here, not at the top, so that registering the strategy stays cheap.
+        from strips_framework.result import Status
         from strips_framework.search.goal_prover import GoalProver
+        from strips_framework.search.limits import Clock, LimitReached
         from strips_framework.search.node import Goal
-        from strips_framework.search.result import EXHAUSTED, INTERRUPTED, SOLVED
-        from strips_framework.search.tree import LimitReached, SearchTree
+        from strips_framework.search.tree import SearchTree
         goal_prover = GoalProver(problem, prover, limits.effort)
-        tree = SearchTree(limits, goal_prover)
+        tree = SearchTree(limits, goal_prover, clock or Clock(limits.time))
         top = (Goal(problem.goal),)
 
         def make(
@@ -98,7 +100,7 @@ class ModelAStarSearch:
                 tree.check_time()
                 _, _, node = heapq.heappop(queue)
                 if node.difference is None:
-                    return tree.result(SOLVED, node)
+                    return tree.result(Status.SOLVED, node)
                 if node.cost > best_cost[node.model]:
                     continue
                 for instance in self._applicable(problem, goal_prover, node.model):
@@ -111,8 +113,8 @@ class ModelAStarSearch:
         except LimitReached as limit:
             return tree.result(limit.status, None)
         except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
-            return tree.result(INTERRUPTED, None)
-        return tree.result(EXHAUSTED, None)
+            return tree.result(Status.INTERRUPTED, None)
+        return tree.result(Status.EXHAUSTED, None)
 
     def _applicable(
         self, problem: Problem, goal_prover: GoalProver, model: WorldModel

@@ -1,28 +1,26 @@
-"""What a search returns: the plan, the tree, and the paper's Table 2 figures."""
+"""What a world-model search reports beyond the common
+:class:`~strips_framework.result.Result`: the paper's Table 2 figures and the tree."""
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from attrs import frozen
 
-from strips_framework.operators import OperatorInstance
 from strips_framework.search.node import Node, path_to
-
-SOLVED = "solved"
-EXHAUSTED = "exhausted"  # every node was expanded: no plan within this strategy's reach
-NODE_LIMIT = "node-limit"
-TIME_LIMIT = "time-limit"
-#: The user pressed Ctrl-C: the search stopped where it was, with its statistics so far.
-INTERRUPTED = "interrupted"
 
 
 @frozen
-class Statistics:
+class WorldModelStatistics:
     """The columns of the paper's Table 2, plus the prover's share of the time.
 
     ``nodes`` counts every node generated; ``applications`` the nodes made by applying an
     operator; the ``path_`` figures count the same along the solution path (2k+1 nodes and
-    k applications for a k-step plan found by means-ends analysis).
+    k applications for a k-step plan found by means-ends analysis). ``seconds`` is the
+    search's own time, of which ``proving_seconds`` went to the prover.
     """
+
+    family: ClassVar[str] = "world-model"
 
     nodes: int
     applications: int
@@ -48,21 +46,27 @@ class Statistics:
             "proof_attempts": self.proof_attempts,
         }
 
+    def lines(self) -> list[str]:
+        return [
+            f"nodes: {self.nodes} in the tree, {self.path_nodes} on the solution path",
+            (
+                f"operator applications: {self.applications} in the tree, "
+                f"{self.path_applications} on the solution path"
+            ),
+            (
+                f"search: {self.seconds:.3f} s, proving {self.proving_seconds:.3f} s "
+                f"({100 * self.proving_share:.0f}%), {self.proof_attempts} proof attempts"
+            ),
+            f"expanded: {self.nodes}",
+        ]
+
 
 @frozen
-class SearchResult:
-    """``status`` is one of SOLVED, EXHAUSTED, NODE_LIMIT, TIME_LIMIT; ``nodes`` is the
-    whole search tree in generation order and ``solution`` its goal node, if any."""
+class Tree:
+    """The whole search tree in generation order and its goal node, if any."""
 
-    status: str
-    plan: tuple[OperatorInstance, ...] | None
-    statistics: Statistics
     nodes: tuple[Node, ...]
     solution: Node | None
-
-    @property
-    def solved(self) -> bool:
-        return self.status == SOLVED
 
     def solution_path(self) -> list[Node]:
         """The nodes from the root to the goal node (empty when unsolved)."""

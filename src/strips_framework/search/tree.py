@@ -1,37 +1,34 @@
-"""The growing search tree: node numbering, limits, and the final statistics."""
+"""The growing search tree: node numbering, limits, and the final result."""
 
 from __future__ import annotations
-
-import time
 
 from attrs import define, field
 
 from strips_framework.operators import OperatorInstance
+from strips_framework.result import Result, Status
 from strips_framework.search.goal_prover import GoalProver
-from strips_framework.search.limits import Limits
+from strips_framework.search.limits import Clock, LimitReached, Limits
 from strips_framework.search.node import Goal, Node, path_to
-from strips_framework.search.result import NODE_LIMIT, TIME_LIMIT, SearchResult, Statistics
+from strips_framework.search.result import Tree, WorldModelStatistics
 from strips_framework.world import WorldModel
-
-
-class LimitReached(Exception):
-    """Raised inside a search when a limit of the config runs out; carries the status."""
-
-    def __init__(self, status: str) -> None:
-        super().__init__(status)
-        self.status = status
 
 
 @define
 class SearchTree:
+    """``clock`` is the run's (see :class:`~strips_framework.search.limits.Clock`);
+    ``searching_since`` when this search began, for its own time in the statistics."""
+
     limits: Limits
     prover: GoalProver
+    clock: Clock
     nodes: list[Node] = field(factory=list)
-    started: float = field(factory=time.perf_counter)
+    searching_since: float = field(init=False)
+
+    def __attrs_post_init__(self) -> None:
+        self.searching_since = self.clock.elapsed()
 
     def check_time(self) -> None:
-        if time.perf_counter() - self.started > self.limits.time:
-            raise LimitReached(TIME_LIMIT)
+        self.clock.check()
 
     def new_node(
         self,
@@ -42,22 +39,30 @@ class SearchTree:
         applied: OperatorInstance | None = None,
     ) -> Node:
         if len(self.nodes) >= self.limits.nodes:
-            raise LimitReached(NODE_LIMIT)
+            raise LimitReached(Status.NODE_LIMIT)
         self.check_time()
         node = Node(len(self.nodes), model, goals, parent, plan, applied)
         self.nodes.append(node)
         return node
 
-    def result(self, status: str, solution: Node | None) -> SearchResult:
+    def result(self, status: Status, solution: Node | None) -> Result:
         path = path_to(solution)
-        statistics = Statistics(
+        elapsed = self.clock.elapsed()
+        statistics = WorldModelStatistics(
             nodes=len(self.nodes),
             applications=sum(1 for n in self.nodes if n.applied is not None),
             path_nodes=len(path),
             path_applications=sum(1 for n in path if n.applied is not None),
-            seconds=time.perf_counter() - self.started,
+            seconds=elapsed - self.searching_since,
             proving_seconds=self.prover.seconds,
             proof_attempts=self.prover.attempts,
         )
-        plan = solution.plan if solution is not None else None
-        return SearchResult(status, plan, statistics, tuple(self.nodes), solution)
+        plan = None if solution is None else tuple(step.ipc() for step in solution.plan)
+        return Result(
+            status,
+            plan,
+            None if plan is None else len(plan),
+            statistics,
+            elapsed,
+            tree=Tree(tuple(self.nodes), solution),
+        )

@@ -7,8 +7,8 @@ strategy runs against itself, with one class in its own tests::
         prover_class = MyProver
 
 (``EvaluatorConformance`` with ``evaluator_class``, ``HeuristicConformance`` with
-``heuristic_class``, ``StrategyConformance`` with ``strategy_class``, world-model and
-ground-task strategies alike.) What is checked depends on the capabilities the class
+``heuristic_class``, ``StrategyConformance`` with ``strategy_class`` for a world-model
+strategy, ``GroundStrategyConformance`` with ``strategy_class`` for a ground-task one.) What is checked depends on the capabilities the class
 declares (see :mod:`strips_framework.capabilities`); ``docs/writing-plugins.md`` walks
 through it. The
 check functions can also be called directly; they raise :class:`ConformanceFailure`.
@@ -46,6 +46,7 @@ from strips_framework.testing.suites import (
     EvaluatorConformance,
     HeuristicConformance,
     ProverConformance,
+    GroundStrategyConformance,
     StrategyConformance,
 )
 
@@ -59,6 +60,7 @@ __all__ = [
     "HeuristicConformance",
     "ProverCase",
     "ProverConformance",
+    "GroundStrategyConformance",
     "StrategyConformance",
     "check_admissible",
     "check_case",

@@ -17,13 +17,8 @@ from typing import Any
 
 from strips_framework.capabilities import ADMISSIBLE, OPTIMAL, declared
 from strips_framework.pddl.validate import validate_plan
-from strips_framework.planner import Planner
-from strips_framework.search.forward.result import (
-    EXHAUSTED_INCOMPLETE,
-    EXPANSION_LIMIT,
-    UNSOLVABLE,
-    ForwardResult,
-)
+from strips_framework.planner import GROUND_STRATEGY, Planner
+from strips_framework.result import Result, Status
 from strips_framework.testing.declaration import ConformanceFailure
 from strips_framework.testing.ground_tasks import UNSOLVABLE as UNSOLVABLE_TASK
 from strips_framework.testing.ground_tasks import ground_task, pddl_task, task_space
@@ -48,20 +43,20 @@ def ground_planner(
         return planner_for(kind, cls, choices, options, limits)
 
 
-def solve_task(planner: Planner, name: str) -> ForwardResult:
+def solve_task(planner: Planner, name: str) -> Result:
     """Kit task ``name`` searched by the planner's strategy and heuristic."""
     return planner.solve_task(ground_task(name))
 
 
-def check_solves_task(planner: Planner, name: str) -> ForwardResult:
+def check_solves_task(planner: Planner, name: str) -> Result:
     """The planner solves kit task ``name`` (unless its strategy says it is incomplete and
     reports so), with a plan the lifted validator accepts at the cost the strategy
     reports; an 'optimal' strategy with an 'admissible' heuristic finds a cheapest plan."""
     result = solve_task(planner, name)
     what = _describe(planner, name)
-    strategy = _chosen(planner, "strategy")
+    strategy = _chosen(planner, GROUND_STRATEGY)
     if not result.solved:
-        if result.status == EXHAUSTED_INCOMPLETE and not getattr(strategy, "complete", True):
+        if result.status == Status.EXHAUSTED and not getattr(strategy, "complete", True):
             return result
         raise ConformanceFailure(
             f"{what}: {result.status} after {result.statistics.expanded} expansions; the task "
@@ -76,7 +71,7 @@ def check_solves_task(planner: Planner, name: str) -> ForwardResult:
             f"{what}: reports cost {result.cost} for a plan that costs {check.cost}: {plan}"
         )
     heuristic = _chosen(planner, "heuristic")
-    if OPTIMAL in (declared(strategy, "strategy") or ()) and ADMISSIBLE in (
+    if OPTIMAL in (declared(strategy, GROUND_STRATEGY) or ()) and ADMISSIBLE in (
         declared(heuristic, "heuristic") or ()
     ):
         optimum = task_space(name).optimum
@@ -88,14 +83,16 @@ def check_solves_task(planner: Planner, name: str) -> ForwardResult:
     return result
 
 
-def check_unsolvable(planner: Planner) -> ForwardResult:
+def check_unsolvable(planner: Planner) -> Result:
     """On the kit's unsolvable task the strategy returns no plan and says why: a complete
     strategy that it ran out of states ('unsolvable'), an incomplete one may say it gave
-    up ('exhausted-incomplete')."""
+    up ('exhausted')."""
     result = solve_task(planner, UNSOLVABLE_TASK)
-    strategy = _chosen(planner, "strategy")
+    strategy = _chosen(planner, GROUND_STRATEGY)
     expected = (
-        {UNSOLVABLE} if getattr(strategy, "complete", True) else {UNSOLVABLE, EXHAUSTED_INCOMPLETE}
+        {Status.UNSOLVABLE}
+        if getattr(strategy, "complete", True)
+        else {Status.UNSOLVABLE, Status.EXHAUSTED}
     )
     if result.status not in expected or result.plan is not None:
         raise ConformanceFailure(
@@ -105,7 +102,7 @@ def check_unsolvable(planner: Planner) -> ForwardResult:
     return result
 
 
-def check_expansion_limit(planner: Planner, name: str, unlimited: ForwardResult) -> ForwardResult:
+def check_expansion_limit(planner: Planner, name: str, unlimited: Result) -> Result:
     """With the planner's expansion limit (``[limits] expansions``), kit task ``name`` is
     searched again: it must stop within the limit, and say so ('expansion-limit') when the
     ``unlimited`` run of the same strategy and heuristic needed more."""
@@ -114,18 +111,18 @@ def check_expansion_limit(planner: Planner, name: str, unlimited: ForwardResult)
     result = solve_task(planner, name)
     expanded = result.statistics.expanded
     if expanded > limit or (
-        unlimited.statistics.expanded > limit and result.status != EXPANSION_LIMIT
+        unlimited.statistics.expanded > limit and result.status != Status.EXPANSION_LIMIT
     ):
         raise ConformanceFailure(
             f"{_describe(planner, name)} with expansions = {limit}: status {result.status!r} "
             f"after {expanded} expansions (without the limit: {unlimited.status!r} after "
-            f"{unlimited.statistics.expanded}); expected {EXPANSION_LIMIT!r} within the limit"
+            f"{unlimited.statistics.expanded}); expected {Status.EXPANSION_LIMIT!r} within the limit"
         )
     return result
 
 
 def _chosen(planner: Planner, kind: str) -> type:
-    return planner.registry.get(kind, planner.config.choices[kind].name).cls
+    return planner.registry.get(kind, planner.config.choice(kind).name).cls
 
 
 def _describe(planner: Planner, name: str) -> str:

@@ -19,7 +19,7 @@ from typing import Any, ClassVar
 from attrs import define, field
 
 from strips_framework.capabilities import ADMISSIBLE, OPTIMAL, declared
-from strips_framework.config import DEFAULT_CHOICES, Config
+from strips_framework.config import DEFAULT_CHOICES, TABLE_OF, Config
 from strips_framework.formats.native import NativeLoader
 from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.formulas import formula_to_str
@@ -27,7 +27,7 @@ from strips_framework.planner import Planner
 from strips_framework.plugins import KINDS, Registry
 from strips_framework.problem import Problem
 from strips_framework.search.node import Node
-from strips_framework.search.result import SearchResult
+from strips_framework.result import Result
 from strips_framework.simulate import replay
 from strips_framework.testing.declaration import ConformanceFailure
 from strips_framework.testing.optimum import StateSpace
@@ -64,7 +64,8 @@ def planner_for(
     """A planner using ``cls`` with ``options`` for ``kind``, ``choices`` (over the
     defaults) for the rest and ``limits``; ``cls`` is registered for the run unless an
     installed plugin already is it."""
-    tables: dict[str, Any] = {**DEFAULT_CHOICES, **choices, kind: {**options, "name": cls.name}}
+    table = TABLE_OF.get(kind, kind)
+    tables: dict[str, Any] = {**DEFAULT_CHOICES, **choices, table: {**options, "name": cls.name}}
     config = Config.from_dict(
         {**tables, "limits": dict(limits)}, f"<conformance kit: {kind} {cls.name!r}>"
     )
@@ -75,7 +76,7 @@ def planner_for(
     return Planner.create(config, extra_plugins=[plugin])
 
 
-def check_solves(planner: Planner, name: str) -> SearchResult:
+def check_solves(planner: Planner, name: str) -> Result:
     """The planner solves problem ``name`` and its plan replays; a strategy declaring
     'optimal', with an evaluator declaring 'admissible', finds a shortest plan."""
     result = planner.solve(load(name))
@@ -83,7 +84,7 @@ def check_solves(planner: Planner, name: str) -> SearchResult:
     return result
 
 
-def check_plan(planner: Planner, name: str, result: SearchResult) -> None:
+def check_plan(planner: Planner, name: str, result: Result) -> None:
     """What :func:`check_solves` checks, of a result already found."""
     problem = load(name)
     what = f"{_describe(planner)} on {name}"
@@ -124,7 +125,7 @@ class ScoreRecorder:
         return score
 
 
-def recorded_search(planner: Planner, name: str) -> tuple[SearchResult, ScoreRecorder]:
+def recorded_search(planner: Planner, name: str) -> tuple[Result, ScoreRecorder]:
     """Solve ``name`` with the planner's components, recording the evaluator's scores."""
     build = planner.config.build
     recorder = ScoreRecorder(build(planner.registry, "evaluator"))
@@ -139,12 +140,13 @@ def recorded_search(planner: Planner, name: str) -> tuple[SearchResult, ScoreRec
     return result, recorder
 
 
-def check_admissible(name: str, result: SearchResult, recorder: ScoreRecorder) -> int:
+def check_admissible(name: str, result: Result, recorder: ScoreRecorder) -> int:
     """No recorded score exceeds the node's cost so far plus the least cost still needed
     (on the solution path and an even sample of the other nodes); returns how many nodes
     were checked."""
     space = state_space(name)
-    on_path = {id(node) for node in result.solution_path()}
+    assert result.tree is not None, "a world-model search returns its tree"
+    on_path = {id(node) for node in result.tree.solution_path()}
     scored = recorder.scores
     path_scores = [(n, s) for n, s in scored if id(n) in on_path]
     others = [(n, s) for n, s in scored if id(n) not in on_path]

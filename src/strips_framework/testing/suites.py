@@ -26,7 +26,7 @@ from strips_framework.capabilities import (
     declared,
 )
 from strips_framework.config import DEFAULT_CHOICES
-from strips_framework.planner import GROUND_TASK, Planner
+from strips_framework.planner import GROUND_STRATEGY, Planner
 from strips_framework.plugins import KINDS, Registry
 from strips_framework.proving import TheoremProver
 from strips_framework.search.forward.eager import AStarSearch
@@ -147,7 +147,7 @@ def _planner(
     """A kit planner, or a skip when a partner it needs is not installed."""
     registry = Registry.from_plugins()
     for partner, name in {**DEFAULT_CHOICES, **choices}.items():
-        if partner != kind and name not in registry.names(partner):
+        if partner not in (kind, "strategy") and name not in registry.names(partner):
             pytest.skip(
                 f"the kit runs {cls.name!r} with {KINDS[partner][1]} {name!r}, which is not "
                 f"installed; install it or set partners = {{{partner!r}: ...}}"
@@ -178,35 +178,23 @@ class EvaluatorConformance(_Conformance):
 
 
 class StrategyConformance(_Conformance):
-    """The kit for a search strategy: set ``strategy_class``.
-
-    A world-model strategy solves the kit's problems with the config's default partners
-    (overridden by ``partners``); one declaring 'optimal' must find shortest plans with
-    every installed admissible evaluator. A ground-task strategy (``works_on =
-    "ground-task"``) solves the kit's PDDL tasks with every installed heuristic (or
-    ``partners["heuristic"]``): plans valid under the lifted validator, cheapest ones
-    when it declares 'optimal' and the heuristic 'admissible'; no plan on an unsolvable
-    task; and it stops at an expansion limit. A strategy with ``complete = False`` may
-    give up ('exhausted-incomplete') but must solve some task."""
+    """The kit for a world-model search strategy: set ``strategy_class``. It solves the
+    kit's problems with the config's default partners (overridden by ``partners``); one
+    declaring 'optimal' must find shortest plans with every installed admissible
+    evaluator."""
 
     kind = "strategy"
     slot = "strategy_class"
     strategy_class: ClassVar[type]
     partners: ClassVar[Mapping[str, str]] = {}
 
-    def _searches(self, works_on: str) -> None:
-        if getattr(self.strategy_class, "works_on", "problem") != works_on:
-            pytest.skip(f"{self.strategy_class.name!r} does not search {works_on}s")
-
     @pytest.mark.parametrize("problem", PROBLEMS)
     def test_solves(self, problem: str) -> None:
-        self._searches("problem")
         planner = _planner("strategy", self.strategy_class, self.partners, self.options)
         check_solves(planner, problem)
 
     @pytest.mark.parametrize("problem", PROBLEMS)
     def test_optimal_with_admissible_evaluators(self, problem: str) -> None:
-        self._searches("problem")
         self._require(OPTIMAL)
         registry = Registry.from_plugins()
         admissible = [
@@ -221,16 +209,29 @@ class StrategyConformance(_Conformance):
             planner = _planner("strategy", self.strategy_class, choices, self.options)
             check_solves(planner, problem)
 
+
+class GroundStrategyConformance(_Conformance):
+    """The kit for a ground-task search strategy: set ``strategy_class``. It solves the
+    kit's PDDL tasks with every installed heuristic (or ``partners["heuristic"]``): plans
+    valid under the lifted validator, cheapest ones when it declares 'optimal' and the
+    heuristic 'admissible'; no plan on an unsolvable task; and it stops at an expansion
+    limit. A strategy with ``complete = False`` may give up ('exhausted') but must solve
+    some task."""
+
+    kind = GROUND_STRATEGY
+    slot = "strategy_class"
+    strategy_class: ClassVar[type]
+    partners: ClassVar[Mapping[str, str]] = {}
+
     def _ground_planners(self, limits: Mapping[str, float] = TASK_LIMITS) -> list[Planner]:
         """A planner per heuristic the kit runs the strategy with."""
-        self._searches(GROUND_TASK)
         heuristics = [self.partners["heuristic"]] if "heuristic" in self.partners else (
             Registry.from_plugins().names("heuristic")
         )
         if not heuristics:
             pytest.skip(f"no {KINDS['heuristic'][1]} is installed")
         return [
-            ground_planner("strategy", self.strategy_class, {"heuristic": h}, self.options, limits)
+            ground_planner(self.kind, self.strategy_class, {"heuristic": h}, self.options, limits)
             for h in heuristics
         ]
 

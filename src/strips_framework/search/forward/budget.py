@@ -12,8 +12,8 @@ import os
 import resource
 import time
 
-from strips_framework.search.forward.result import LIMIT_STATUS
-from strips_framework.search.limits import Limits
+from strips_framework.result import Status
+from strips_framework.search.limits import Clock, LimitReached, Limits
 
 CHECK_INTERVAL = 256
 _PAGE_MIB = os.sysconf("SC_PAGE_SIZE") / 2**20 if hasattr(os, "sysconf") else 4 / 1024
@@ -33,31 +33,21 @@ def peak_mib() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
-class LimitReached(Exception):
-    """Raised inside a search when a limit ends it; ``key`` is the ``[limits]`` key."""
-
-    def __init__(self, key: str) -> None:
-        super().__init__(key)
-        self.key = key
-        self.status = LIMIT_STATUS[key]
-
-
 class Budget:
-    """The limits of one search, with the time counted from ``started`` (a
-    :func:`time.perf_counter` value: the start of the whole run, so reading and grounding
-    use up the same allowance)."""
+    """The limits of one search, with the time measured by the run's ``clock`` (started
+    with the whole run, so reading and grounding use up the same allowance)."""
 
-    def __init__(self, limits: Limits, started: float) -> None:
-        self.deadline = started + limits.time
+    def __init__(self, limits: Limits, clock: Clock) -> None:
+        self.deadline = clock.deadline
         self.max_expansions = limits.expansions if limits.expansions is not None else math.inf
         self.memory = limits.memory
 
     def check(self, expanded: int) -> None:
         """Raise :class:`LimitReached` when a limit is exceeded after ``expanded``."""
         if expanded >= self.max_expansions:
-            raise LimitReached("expansions")
+            raise LimitReached(Status.EXPANSION_LIMIT)
         if time.perf_counter() > self.deadline:
-            raise LimitReached("time")
+            raise LimitReached(Status.TIME_LIMIT)
         memory = self.memory
         if memory is not None and expanded % CHECK_INTERVAL == 0 and resident_mib() > memory:
-            raise LimitReached("memory")
+            raise LimitReached(Status.MEMORY_LIMIT)

@@ -5,7 +5,7 @@ estimate, then makes that state current and starts again, until a goal state is 
 With ``preferred = true`` (helpful actions) each breadth-first search follows only the
 preferred operators of the states it expands, which is what makes the method fast, and
 incomplete: when a breadth-first search runs out, the whole search gives up
-(``exhausted-incomplete``). A state for which the heuristic names no preferred operators
+(``exhausted``). A state for which the heuristic names no preferred operators
 (every state, for heuristics that have none) has all its applicable operators followed,
 as Fast Downward does without preferred-operator heuristics. States are never visited twice, across phases too.
 """

@@ -1,23 +1,11 @@
-"""What a forward search returns: status, plan, cost and the figures of the run."""
+"""What a forward search reports beyond the common :class:`~strips_framework.result.Result`:
+the counts Fast Downward reports."""
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from attrs import frozen
-
-from strips_framework.search import result
-
-SOLVED = "solved"
-#: A complete search visited every reachable state that is not a proven dead end.
-UNSOLVABLE = "unsolvable"
-#: An incomplete search (enforced hill-climbing) gave up without a plan.
-EXHAUSTED_INCOMPLETE = "exhausted-incomplete"
-TIME_LIMIT = "time-limit"
-MEMORY_LIMIT = "memory-limit"
-EXPANSION_LIMIT = "expansion-limit"
-INTERRUPTED = result.INTERRUPTED
-
-#: The status that each limit ends a run with, by the ``[limits]`` key.
-LIMIT_STATUS = {"time": TIME_LIMIT, "memory": MEMORY_LIMIT, "expansions": EXPANSION_LIMIT}
 
 
 @frozen
@@ -26,6 +14,8 @@ class ForwardStatistics:
     ``evaluated`` heuristic calls, ``generated`` successor states, ``reopened`` closed
     states reached again more cheaply; ``dead_ends`` states the heuristic proved hopeless.
     Times are wall-clock seconds; ``peak_memory_mib`` is the process's peak resident set."""
+
+    family: ClassVar[str] = "forward"
 
     expanded: int = 0
     evaluated: int = 0
@@ -54,23 +44,19 @@ class ForwardStatistics:
             "peak_memory_mib": round(self.peak_memory_mib, 1),
         }
 
-
-@frozen
-class ForwardResult:
-    """``plan`` holds the operator names (IPC steps) when ``status`` is SOLVED; ``cost``
-    is the plan's total cost (its length on a unit-cost task). ``limit`` names the
-    ``[limits]`` key that ended the run, if one did."""
-
-    status: str
-    plan: tuple[str, ...] | None
-    cost: int | None
-    statistics: ForwardStatistics
-    uses_costs: bool = False
-
-    @property
-    def solved(self) -> bool:
-        return self.status == SOLVED
-
-    @property
-    def limit(self) -> str | None:
-        return next((key for key, status in LIMIT_STATUS.items() if status == self.status), None)
+    def lines(self) -> list[str]:
+        """``expanded: N`` and the like, one a line, as Fast Downward users' scripts look
+        for them."""
+        return [
+            f"expanded: {self.expanded}",
+            f"evaluated: {self.evaluated}",
+            f"generated: {self.generated}",
+            f"reopened: {self.reopened}",
+            f"dead ends: {self.dead_ends}",
+            f"facts: {self.facts}, operators: {self.operators}",
+            (
+                f"phases: parse {self.parse_seconds:.3f} s, ground {self.ground_seconds:.3f} s, "
+                f"search {self.search_seconds:.3f} s"
+            ),
+            f"peak memory: {self.peak_memory_mib:.1f} MiB",
+        ]

@@ -1,0 +1,98 @@
+"""What every search returns, whichever family it belongs to: one status vocabulary and
+one result type.
+
+The two families (means-ends and model-A* over first-order world models; forward search
+over ground tasks) count different things, so each keeps its own statistics record
+(:class:`~strips_framework.search.result.WorldModelStatistics`,
+:class:`~strips_framework.search.forward.result.ForwardStatistics`), nested in the one
+:class:`Result`; the status, the plan, its cost and the run's time mean the same for both.
+"""
+
+from __future__ import annotations
+
+import enum
+from typing import TYPE_CHECKING, ClassVar, Protocol
+
+from attrs import frozen
+
+if TYPE_CHECKING:
+    from strips_framework.search.result import Tree
+
+
+class Status(enum.StrEnum):
+    """How a search ended. A ``str`` subclass, so ``status == "solved"`` and JSON work."""
+
+    SOLVED = "solved"
+    #: A complete search visited every reachable state that is not a proven dead end.
+    UNSOLVABLE = "unsolvable"
+    #: An incomplete search (means-ends, model-A*, enforced hill-climbing) ran out of
+    #: nodes without a plan: there may still be one.
+    EXHAUSTED = "exhausted"
+    NODE_LIMIT = "node-limit"
+    EXPANSION_LIMIT = "expansion-limit"
+    TIME_LIMIT = "time-limit"
+    MEMORY_LIMIT = "memory-limit"
+    #: The user pressed Ctrl-C: the search stopped where it was, with its statistics so far.
+    INTERRUPTED = "interrupted"
+
+    def __repr__(self) -> str:
+        """``'solved'``: messages quote a status as the word the output shows."""
+        return repr(self.value)
+
+
+#: The status each ``[limits]`` key ends a run with.
+LIMIT_STATUS = {
+    "time": Status.TIME_LIMIT,
+    "memory": Status.MEMORY_LIMIT,
+    "nodes": Status.NODE_LIMIT,
+    "expansions": Status.EXPANSION_LIMIT,
+}
+
+
+def limit_key(status: Status) -> str | None:
+    """The ``[limits]`` key whose limit ends a run with ``status``, if one does."""
+    return next((key for key, value in LIMIT_STATUS.items() if value == status), None)
+
+
+class FamilyStatistics(Protocol):
+    """The figures one family of searches reports (see the module docstring)."""
+
+    #: ``"world-model"`` or ``"forward"``: which record the JSON ``statistics`` holds.
+    family: ClassVar[str]
+
+    def as_dict(self) -> dict[str, float | int]:
+        """The figures by name, as the JSON output carries them."""
+        ...
+
+    def lines(self) -> list[str]:
+        """The figures as ``name: value`` lines for the text output."""
+        ...
+
+
+@frozen
+class Result:
+    """One search's outcome.
+
+    ``plan`` holds the steps in IPC form, ``(name arg ...)``, when ``status`` is SOLVED;
+    ``cost`` is the plan's total cost (its length on a unit-cost task); ``seconds`` the
+    wall-clock time since the planner's clock started (reading and grounding included when
+    the planner read the input). ``tree`` is the search tree of a world-model search (for
+    ``--tree`` and the evaluators' tests), ``None`` for forward search.
+    """
+
+    status: Status
+    plan: tuple[str, ...] | None
+    cost: int | None
+    statistics: FamilyStatistics
+    seconds: float = 0.0
+    uses_costs: bool = False
+    tree: Tree | None = None
+
+    @property
+    def solved(self) -> bool:
+        return self.status == Status.SOLVED
+
+    @property
+    def limit(self) -> str | None:
+        """The ``[limits]`` key that ended the run, if one did."""
+        return limit_key(self.status)
