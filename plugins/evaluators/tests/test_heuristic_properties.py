@@ -2,7 +2,8 @@
 against the true cost to the goal (a backward Dijkstra over the explicit state space).
 
 The tasks are IPC first tasks (grounded from PDDL) and seeded random tasks with action
-costs (zero-cost operators included), negative preconditions and axioms.
+costs (zero-cost operators included), negative preconditions and axioms, half of them with
+conditional effects.
 """
 
 from __future__ import annotations
@@ -19,7 +20,13 @@ from strips_evaluators.heuristics.hmax import max_exploration, unit_cost_hmax
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
-from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask, mask_of
+from strips_framework.grounding.task import (
+    GroundAxiom,
+    GroundEffect,
+    GroundOperator,
+    GroundTask,
+    mask_of,
+)
 from strips_framework.pddl import find_domain, load_task
 from strips_framework.plugins import Registry
 from strips_framework.search.limits import Limits
@@ -46,19 +53,35 @@ def ipc_task(domain: str) -> GroundTask:
     return ground(load_task(find_domain(problem), problem))
 
 
-def random_task(seed: int) -> GroundTask:
-    """A small random task: 7 basic facts, 2 derived ones, 10 operators with costs 0..3."""
+def random_task(seed: int, conditional: bool = False) -> GroundTask:
+    """A small random task: 7 basic facts, 2 derived ones, 10 operators with costs 0..3;
+    with ``conditional``, up to two conditional effects per operator (some of which add
+    nothing unconditionally)."""
     rng = random.Random(seed)
     basic = list(range(7))
     derived = [7, 8]
     operators = []
     for index in range(10):
         pre = tuple(rng.sample(basic + derived, rng.randint(0, 2)))
-        add = tuple(rng.sample(basic, rng.randint(1, 2)))
+        add = tuple(rng.sample(basic, rng.randint(0 if conditional else 1, 2)))
         delete = tuple(f for f in rng.sample(basic, rng.randint(0, 2)) if f not in add)
         pre_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)) if f not in pre)
+        effects = []
+        for _ in range(rng.randint(0, 2) if conditional else 0):
+            condition = tuple(rng.sample(basic + derived, rng.randint(1, 2)))
+            condition_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)))
+            effects.append(
+                GroundEffect(
+                    condition,
+                    tuple(f for f in condition_neg if f not in condition),
+                    tuple(rng.sample(basic, 1)),
+                    tuple(rng.sample(basic, rng.randint(0, 1))),
+                )
+            )
         operators.append(
-            GroundOperator(f"(op{index})", pre, add, delete, rng.randint(0, 3), pre_neg)
+            GroundOperator(
+                f"(op{index})", pre, add, delete, rng.randint(0, 3), pre_neg, tuple(effects)
+            )
         )
     axioms = (
         GroundAxiom(7, tuple(rng.sample(basic, 2))),
@@ -86,13 +109,20 @@ def optimal_costs(task: GroundTask) -> dict[int, float]:
     return TaskSpace(task, max_states=1_000_000).cost_to_go
 
 
-TASKS = [*(f"ipc:{domain}" for domain in PDDL_DOMAINS), *(f"random:{seed}" for seed in range(40))]
+TASKS = [
+    *(f"ipc:{domain}" for domain in PDDL_DOMAINS),
+    *(f"random:{seed}" for seed in range(40)),
+    *(f"conditional:{seed}" for seed in range(40)),
+]
 
 
 @pytest.fixture(scope="module", params=TASKS)
 def task_and_costs(request) -> tuple[GroundTask, dict[int, float]]:
     kind, name = request.param.split(":")
-    task = ipc_task(name) if kind == "ipc" else random_task(int(name))
+    if kind == "ipc":
+        task = ipc_task(name)
+    else:
+        task = random_task(int(name), conditional=kind == "conditional")
     return task, optimal_costs(task)
 
 
@@ -121,11 +151,14 @@ def test_dead_ends_are_real_and_goals_score_zero(task_and_costs) -> None:
 
 def test_relaxation_bounds_are_ordered(task_and_costs) -> None:
     """hmax <= LM-cut <= h+ <= hFF, and hmax <= hadd; all relaxed heuristics agree on
-    which states are relaxed dead ends."""
+    which states are relaxed dead ends. With conditional effects LM-cut can fall below
+    hmax (a cut lowers the cost of its operators' other effects too), not below 0."""
     task, optimal = task_and_costs
     h = {name: values(task, name, optimal) for name in ("hmax", "hadd", "ff", "lmcut")}
+    conditional = any(op.effects for op in task.operators)
     for state in optimal:
-        assert h["hmax"][state] <= h["lmcut"][state] <= h["ff"][state], task.facts_of(state)
+        assert h["lmcut"][state] <= h["ff"][state], task.facts_of(state)
+        assert conditional or h["hmax"][state] <= h["lmcut"][state], task.facts_of(state)
         assert h["hmax"][state] <= h["hadd"][state]
         assert len({h[name][state] == math.inf for name in h}) == 1
 
@@ -145,8 +178,8 @@ def test_ff_prefers_some_operator_unless_at_a_goal_or_dead_end(task_and_costs) -
     """Without negative preconditions, a relaxed plan always starts with an operator that
     is applicable in the state."""
     task, optimal = task_and_costs
-    if any(op.pre_neg for op in task.operators):
-        pytest.skip("negative preconditions can block every relaxed-plan operator")
+    if any(op.pre_neg or any(e.condition_neg for e in op.effects) for op in task.operators):
+        pytest.skip("negative conditions can block every relaxed-plan operator")
     estimator = HEURISTICS["ff"]().for_task(task)
     for state in optimal:
         value, preferred = estimator.estimate_with_preferred(state)

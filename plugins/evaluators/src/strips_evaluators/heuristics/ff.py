@@ -2,9 +2,11 @@
 
 A relaxed plan is extracted backwards from the goal: each goal fact not in the state is
 achieved by its best supporter under hadd, whose preconditions become subgoals in turn.
-hFF is the total cost of the distinct operators in that plan. Preferred operators are
-the relaxed plan's operators applicable in the state: they start a relaxed plan, so
-they are the moves most likely to make progress (FF's "helpful actions").
+hFF is the total cost of the distinct operators in that plan (an operator used for
+several of its conditional effects counts once). Preferred operators are the relaxed
+plan's operators applicable in the state (with the condition of the effect the plan uses):
+they start a relaxed plan, so they are the moves most likely to make progress (FF's
+"helpful actions").
 """
 
 from __future__ import annotations
@@ -24,11 +26,6 @@ from strips_framework.grounding.task import GroundTask
 class FFEstimator:
     relaxed: RelaxedTask
     goal_mask: int
-    #: Per relaxed operator: the real operator's precondition and negative-precondition
-    #: masks (0 for axioms and conjunctions), to keep only the really applicable ones as
-    #: preferred.
-    pre_masks: list[int]
-    neg_masks: list[int]
 
     def estimate(self, state: int) -> float:
         return self._relaxed_plan(state)[0]
@@ -37,16 +34,16 @@ class FFEstimator:
         value, plan = self._relaxed_plan(state)
         if not plan:
             return value, []
-        operator, pre_masks, neg_masks = self.relaxed.operator, self.pre_masks, self.neg_masks
-        preferred = [
+        relaxed = self.relaxed
+        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
+        preferred = {
             operator[op]
             for op in plan
             if operator[op] >= 0
             and state & pre_masks[op] == pre_masks[op]
             and not state & neg_masks[op]
-        ]
-        preferred.sort()
-        return value, preferred
+        }
+        return value, sorted(preferred)
 
     def _relaxed_plan(self, state: int) -> tuple[float, set[int]]:
         """hFF and the relaxed operators of the relaxed plan (empty at goals and dead ends)."""
@@ -69,6 +66,9 @@ class FFEstimator:
             plan.add(op)
             total += op_cost[op]
             subgoals.extend(pre[op])
+        if relaxed.shared_costs:
+            operator = relaxed.operator
+            total = sum(op_cost[first] for first in {operator[op]: op for op in plan}.values())
         return total, plan
 
 
@@ -86,8 +86,4 @@ class FFHeuristic:
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> FFEstimator:
-        relaxed = relax(task, factor_sharing=SHARING)
-        operators = task.operators
-        pre_masks = [operators[i].pre_mask if i >= 0 else 0 for i in relaxed.operator]
-        neg_masks = [operators[i].pre_neg_mask if i >= 0 else 0 for i in relaxed.operator]
-        return FFEstimator(relaxed, task.goal_mask, pre_masks, neg_masks)
+        return FFEstimator(relax(task, factor_sharing=SHARING), task.goal_mask)
