@@ -26,7 +26,6 @@ Mistakes are reported with their key path and what was expected.
 
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -74,6 +73,8 @@ class Config:
 
     @classmethod
     def from_file(cls, path: Path) -> Config:
+        import tomllib  # not at the top: a run without a config file does not pay for it
+
         try:
             text = path.read_text(encoding="utf-8")
         except OSError as error:

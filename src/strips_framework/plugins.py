@@ -2,7 +2,9 @@
 
 Builtin implementations are registered exactly like outside ones: each module in
 :data:`DEFAULT_PLUGINS` holds ``@hookimpl`` functions, as an installed distribution's
-entry-point module in the group ``strips_framework`` does. Nothing is loaded at import
+entry-point module in the group ``strips_framework`` does (the installed entry points come
+from :mod:`strips_framework.entry_points`, which caches them by what is installed, so a
+run does not pay for :mod:`importlib.metadata`). Nothing is loaded at import
 time; :func:`get_plugin_manager` builds a fresh manager on each call, and the
 :class:`Registry` calls a kind's hook only when that kind is first looked up (a plugin
 module that imports its classes inside its hooks costs nothing until then). Set
@@ -19,7 +21,7 @@ import attrs
 import pluggy
 from attrs import frozen
 
-from strips_framework import hookspecs
+from strips_framework import entry_points, hookspecs
 from strips_framework.errors import PluginError
 
 DEFAULT_PLUGINS = ("strips_framework.builtins",)
@@ -55,18 +57,37 @@ KNOWN_PROVIDERS = {
 AUTOLOAD_SWITCH = "STRIPS_DISABLE_PLUGIN_AUTOLOAD"
 
 
+class PluginManager(pluggy.PluginManager):
+    """pluggy's manager, plus the distribution each installed plugin came from."""
+
+    def __init__(self) -> None:
+        super().__init__(hookspecs.PROJECT)
+        #: Plugin name -> the distribution whose entry point registered it.
+        self.distributions: dict[str, str] = {}
+
+    def load_entry_points(self) -> None:
+        """Register the plugins of the ``strips_framework`` entry points, as pluggy's
+        ``load_setuptools_entrypoints`` does (a name already registered or blocked is
+        skipped), from the cached list of installed entry points."""
+        for name, value, distribution in entry_points.entry_points(hookspecs.PROJECT):
+            if self.has_plugin(name) or self.is_blocked(name):
+                continue
+            self.register(entry_points.load(value), name=name)
+            self.distributions[name] = distribution
+
+
 def get_plugin_manager(
     extra_plugins: Iterable[object] = (), load_entrypoints: bool | None = None
-) -> pluggy.PluginManager:
+) -> PluginManager:
     """A new plugin manager with the builtins, installed plugins and ``extra_plugins``."""
-    manager = pluggy.PluginManager(hookspecs.PROJECT)
+    manager = PluginManager()
     manager.add_hookspecs(hookspecs)
     for module_name in DEFAULT_PLUGINS:
         manager.register(importlib.import_module(module_name), name=module_name)
     if load_entrypoints is None:
         load_entrypoints = not os.environ.get(AUTOLOAD_SWITCH)
     if load_entrypoints:
-        manager.load_setuptools_entrypoints(hookspecs.PROJECT)
+        manager.load_entry_points()
     for plugin in extra_plugins:
         manager.register(plugin)
     manager.check_pending()
@@ -106,21 +127,15 @@ class Registry:
     """Implementation classes by kind and name, as the hooks registered them; each kind's
     hook is called the first time the kind is looked up."""
 
-    def __init__(self, manager: pluggy.PluginManager) -> None:
+    def __init__(self, manager: PluginManager) -> None:
         self._manager = manager
         self._by_kind: dict[str, dict[str, Registration]] = {}
-        self._distributions: dict[int, str] | None = None
 
     def _kind(self, kind: str) -> dict[str, Registration]:
         """The registrations of ``kind``, collected from its hook on first use."""
         found = self._by_kind.get(kind)
         if found is not None:
             return found
-        if self._distributions is None:
-            self._distributions = {
-                id(plugin): dist.project_name
-                for plugin, dist in self._manager.list_plugin_distinfo()
-            }
         hook_name, words, _ = KINDS[kind]
         found = {}
         caller = getattr(self._manager.hook, hook_name)
@@ -138,9 +153,8 @@ class Registry:
                         f"{words} {name!r} is registered twice: by {known.plugin!r} "
                         f"and by {impl.plugin_name!r}"
                     )
-                found[name] = Registration(
-                    kind, name, cls, impl.plugin_name, self._distributions.get(id(impl.plugin))
-                )
+                distribution = self._manager.distributions.get(impl.plugin_name)
+                found[name] = Registration(kind, name, cls, impl.plugin_name, distribution)
         self._by_kind[kind] = found
         return found
 
