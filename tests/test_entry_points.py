@@ -72,7 +72,6 @@ def test_a_newly_installed_distribution_is_found(tmp_path):
     assert "fake" in after[0].split(",") and after[-1] == "True"
     again = run(tmp_path, tmp_path / "site")
     assert again[0] == after[0] and again[-1] == "False"
-    # The older installation's cache file is gone: one file per group.
     assert len(list((tmp_path / "cache" / "strips-framework").iterdir())) == 1
 
 

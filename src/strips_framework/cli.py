@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import warnings
 from collections.abc import Sequence
@@ -196,7 +195,7 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
             "statistics": result.statistics.as_dict(),
             "config": {kind: choice.name for kind, choice in planner.config.choices.items()},
         }
-        print(json.dumps(payload, indent=2))
+        _print_json(payload)
     else:
         print("\n".join(_plan_lines(result) + _statistics_lines(result)))
     return exit_codes.for_status(result.status)
@@ -220,27 +219,30 @@ def _report_forward(
             "statistics": result.statistics.as_dict(),
             "config": {kind: choice.name for kind, choice in planner.config.choices.items()},
         }
-        print(json.dumps(payload, indent=2))
+        _print_json(payload)
     else:
         print("\n".join(_forward_lines(result)))
     return code
+
+
+def _print_json(payload: dict[str, object]) -> None:
+    import json  # only --json needs it: start-up counts on small tasks
+
+    print(json.dumps(payload, indent=2))
 
 
 def _report_limit(args: argparse.Namespace, status: str) -> int:
     """A limit hit before the search began (reading or grounding)."""
     code = exit_codes.for_status(status)
     if args.json:
-        print(
-            json.dumps(
-                {
-                    "status": status,
-                    "limit": status.removesuffix("-limit"),
-                    "exit_code": code,
-                    "plan": None,
-                    "statistics": None,
-                },
-                indent=2,
-            )
+        _print_json(
+            {
+                "status": status,
+                "limit": status.removesuffix("-limit"),
+                "exit_code": code,
+                "plan": None,
+                "statistics": None,
+            }
         )
     else:
         print(f"status: {status} (before the search began)")

@@ -4,18 +4,17 @@ Asking :mod:`importlib.metadata` for entry points imports it (with ``email``, ``
 ``csv`` and more) and reads every installed distribution's metadata: tens of
 milliseconds, more than the whole solve of a small PDDL task. The answer only changes
 when distributions are installed, removed or upgraded, so it is kept in a small file
-named after a *signature* of the installation: for every ``*.dist-info`` and
-``*.egg-info`` folder on :data:`sys.path`, its path and the modification time and size of
-its ``entry_points.txt``. Computing the signature is one directory listing per
+together with a *signature* of the installation it was read from: for every
+``*.dist-info`` and ``*.egg-info`` folder on :data:`sys.path`, its path and the
+modification time and size of its ``entry_points.txt``. Computing the signature is one directory listing per
 :data:`sys.path` entry and one ``stat`` per distribution; any install, uninstall,
 upgrade or edited ``entry_points.txt`` changes it and the next lookup reads the metadata
-again. The cache lives under ``$XDG_CACHE_HOME/strips-framework`` (default
+again (and rewrites the file). The cache lives under ``$XDG_CACHE_HOME/strips-framework`` (default
 ``~/.cache``); where it cannot be written, every lookup reads the metadata.
 """
 
 from __future__ import annotations
 
-import hashlib
 import os
 import sys
 from pathlib import Path
@@ -32,19 +31,20 @@ EntryPoint = tuple[str, str, str]
 def entry_points(group: str) -> list[EntryPoint]:
     """The entry points of ``group`` in the order :mod:`importlib.metadata` lists them."""
     cache = _cache_file(group)
+    # The signature's lines hold no blank line: one ends it in the file.
+    signature = _signature() + "\n\n"
     if cache is not None:
         try:
             text = cache.read_text(encoding="utf-8")
         except OSError:
-            pass
-        else:
-            return [tuple(line.split("\t")) for line in text.splitlines()]  # type: ignore[misc]
+            text = ""
+        if text.startswith(signature):
+            rows = text[len(signature) :].splitlines()
+            return [tuple(row.split("\t")) for row in rows]  # type: ignore[misc]
     found = _read_metadata(group)
     if cache is not None:
-        _write(cache, "".join(f"{name}\t{value}\t{dist}\n" for name, value, dist in found))
-        for stale in cache.parent.glob(f"entry-points-{group}-*.txt"):
-            if stale != cache:
-                stale.unlink(missing_ok=True)  # an older installation's
+        rows = "".join(f"{name}\t{value}\t{dist}\n" for name, value, dist in found)
+        _write(cache, signature + rows)
     return found
 
 
@@ -74,13 +74,12 @@ def _cache_file(group: str) -> Path | None:
     base = os.environ.get(CACHE_ENV) or os.path.join(os.path.expanduser("~"), ".cache")
     if not os.path.isabs(base):
         return None
-    digest = hashlib.blake2b(_signature().encode(), digest_size=16).hexdigest()
-    return Path(base, "strips-framework", f"entry-points-{group}-{digest}.txt")
+    return Path(base, "strips-framework", f"entry-points-{group}.txt")
 
 
 def _signature() -> str:
     """What is installed, as far as entry points can tell (see the module docstring)."""
-    parts = [sys.version]
+    parts = [sys.executable, sys.version.replace("\n", " ")]
     for entry in sys.path:
         try:
             listing = os.scandir(entry or ".")
