@@ -9,39 +9,28 @@ conditional effects.
 from __future__ import annotations
 
 import math
-import random
-from pathlib import Path
 
 import pytest
 
 from strips_evaluators import plugin
-from strips_evaluators.heuristics.additive import additive_exploration
-from strips_evaluators.heuristics.hmax import max_exploration, unit_cost_hmax
+from strips_evaluators.heuristics.exploration import (
+    additive_exploration,
+    max_exploration,
+    unit_cost_hmax,
+)
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding import ground
-from strips_framework.grounding.axioms import AxiomEvaluator
-from strips_framework.grounding.task import (
-    GroundAxiom,
-    GroundEffect,
-    GroundOperator,
-    GroundTask,
-    mask_of,
-)
+from strips_framework.grounding.task import GroundTask
 from strips_framework.pddl import find_domain, load_task
 from strips_framework.plugins import Registry
 from strips_framework.search.limits import Limits
 from strips_framework.testing.ground_space import TaskSpace
 
-
-def _find_ipc() -> Path | None:
-    """``shared/bench/ipc`` beside the repository; without it the IPC cases skip."""
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
+from random_tasks import random_task
+from shared_bench import shared_bench
 
 
-IPC = _find_ipc()
+IPC = shared_bench("ipc")  # without it the IPC cases skip
 PDDL_DOMAINS = ["blocks", "gripper", "depot", "zenotravel", "transport", "miconic", "pegsol"]
 HEURISTICS = {cls.name: cls for cls in plugin.strips_register_heuristics()}
 
@@ -51,56 +40,6 @@ def ipc_task(domain: str) -> GroundTask:
         pytest.skip("shared/bench/ipc not found")
     problem = IPC / domain / "task01.pddl"
     return ground(load_task(find_domain(problem), problem))
-
-
-def random_task(seed: int, conditional: bool = False) -> GroundTask:
-    """A small random task: 7 basic facts, 2 derived ones, 10 operators with costs 0..3;
-    with ``conditional``, up to two conditional effects per operator (some of which add
-    nothing unconditionally)."""
-    rng = random.Random(seed)
-    basic = list(range(7))
-    derived = [7, 8]
-    operators = []
-    for index in range(10):
-        pre = tuple(rng.sample(basic + derived, rng.randint(0, 2)))
-        add = tuple(rng.sample(basic, rng.randint(0 if conditional else 1, 2)))
-        delete = tuple(f for f in rng.sample(basic, rng.randint(0, 2)) if f not in add)
-        pre_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)) if f not in pre)
-        effects = []
-        for _ in range(rng.randint(0, 2) if conditional else 0):
-            condition = tuple(rng.sample(basic + derived, rng.randint(1, 2)))
-            condition_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)))
-            effects.append(
-                GroundEffect(
-                    condition,
-                    tuple(f for f in condition_neg if f not in condition),
-                    tuple(rng.sample(basic, 1)),
-                    tuple(rng.sample(basic, rng.randint(0, 1))),
-                )
-            )
-        operators.append(
-            GroundOperator(
-                f"(op{index})", pre, add, delete, rng.randint(0, 3), pre_neg, tuple(effects)
-            )
-        )
-    axioms = (
-        GroundAxiom(7, tuple(rng.sample(basic, 2))),
-        GroundAxiom(8, tuple(rng.sample(basic, 1)), tuple(rng.sample(basic, 1))),
-    )
-    task = GroundTask(
-        name=f"random{seed}",
-        facts=tuple(f"(f{i})" for i in range(9)),
-        operators=tuple(operators),
-        init=0,
-        goal=tuple(rng.sample(basic + derived, rng.randint(1, 3))),
-        axioms=axioms,
-        derived=tuple(derived),
-        uses_costs=True,
-    )
-    init = AxiomEvaluator(task).evaluate(mask_of(tuple(rng.sample(basic, rng.randint(1, 3)))))
-    return GroundTask(
-        task.name, task.facts, task.operators, init, task.goal, axioms, task.derived, True
-    )
 
 
 def optimal_costs(task: GroundTask) -> dict[int, float]:

@@ -15,7 +15,7 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_evaluators.heuristics.additive import additive_exploration
+from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
@@ -25,13 +25,18 @@ from strips_framework.grounding.task import GroundTask
 @frozen
 class FFEstimator:
     relaxed: RelaxedTask
+    explorer: Explorer
     goal_mask: int
 
     def estimate(self, state: int) -> float:
-        return self._relaxed_plan(state)[0]
+        if state & self.goal_mask == self.goal_mask:
+            return 0
+        return self.explorer.relaxed_plan(state)[0]
 
     def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
-        value, plan = self._relaxed_plan(state)
+        if state & self.goal_mask == self.goal_mask:
+            return 0, []
+        value, plan = self.explorer.relaxed_plan(state)
         if not plan:
             return value, []
         relaxed = self.relaxed
@@ -44,32 +49,6 @@ class FFEstimator:
             and not state & neg_masks[op]
         }
         return value, sorted(preferred)
-
-    def _relaxed_plan(self, state: int) -> tuple[float, set[int]]:
-        """hFF and the relaxed operators of the relaxed plan (empty at goals and dead ends)."""
-        if state & self.goal_mask == self.goal_mask:
-            return 0, set()
-        relaxed = self.relaxed
-        cost, supporter = additive_exploration(relaxed, state)
-        goal = relaxed.goal
-        for fact in goal:
-            if cost[fact] == float("inf"):
-                return float("inf"), set()
-        pre, op_cost = relaxed.pre, relaxed.cost
-        plan: set[int] = set()
-        total = 0
-        subgoals = list(goal)
-        while subgoals:
-            op = supporter[subgoals.pop()]
-            if op < 0 or op in plan:
-                continue
-            plan.add(op)
-            total += op_cost[op]
-            subgoals.extend(pre[op])
-        if relaxed.shared_costs:
-            operator = relaxed.operator
-            total = sum(op_cost[first] for first in {operator[op]: op for op in plan}.values())
-        return total, plan
 
 
 @frozen
@@ -86,4 +65,5 @@ class FFHeuristic:
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> FFEstimator:
-        return FFEstimator(relax(task, factor_sharing=SHARING), task.goal_mask)
+        relaxed = relax(task, factor_sharing=SHARING)
+        return FFEstimator(relaxed, explorer(relaxed), task.goal_mask)

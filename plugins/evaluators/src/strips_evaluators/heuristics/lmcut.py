@@ -32,7 +32,7 @@ from typing import ClassVar
 import attrs
 from attrs import frozen
 
-from strips_evaluators.heuristics.hmax import max_exploration
+from strips_evaluators.heuristics.exploration import max_exploration
 from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in, relax
 from strips_framework.grounding.task import GroundTask
 
