@@ -230,24 +230,25 @@ cdef class Explorer:
 
     def hadd(self, state):
         """The sum of the goal facts' additive costs (``math.inf``: a relaxed dead end)."""
-        cdef long long total = 0
-        cdef int i
-        if not self._explore(state, True):
-            return math.inf
-        for i in range(self.num_goals):
-            total += self.cost[self.goal[i]]
-        return total
+        return self._goal_value(state, True)
 
     def hmax(self, state):
         """The costliest goal fact's cost under the max relaxation."""
-        cdef long long highest = 0
+        return self._goal_value(state, False)
+
+    cdef object _goal_value(self, object state, bint additive):
+        """The goal facts' costs summed (``additive``) or their maximum."""
+        cdef long long total = 0, value
         cdef int i
-        if not self._explore(state, False):
+        if not self._explore(state, additive):
             return math.inf
         for i in range(self.num_goals):
-            if self.cost[self.goal[i]] > highest:
-                highest = self.cost[self.goal[i]]
-        return highest
+            value = self.cost[self.goal[i]]
+            if additive:
+                total += value
+            elif value > total:
+                total = value
+        return total
 
     def relaxed_plan(self, state):
         """hFF and the relaxed operators of the relaxed plan from hadd best supporters
