@@ -81,6 +81,7 @@ def assert_same_explorations(task: GroundTask) -> None:
             value, plan = compiled.relaxed_plan(state)
             expected_value, expected_plan = python.relaxed_plan(state)
             assert (value, sorted(plan)) == (expected_value, sorted(expected_plan))
+            assert compiled.preferred(state) == python.preferred(state)
 
 
 def test_the_compiled_module_is_built():

@@ -31,6 +31,18 @@ cdef int* _ints(values) except NULL:
     return array
 
 
+def _bits(mask):
+    """The fact numbers set in ``mask``, ascending."""
+    facts = []
+    position = 0
+    while mask:
+        if mask & 1:
+            facts.append(position)
+        mask >>= 1
+        position += 1
+    return facts
+
+
 cdef class Explorer:
     """hadd, hmax and the hFF relaxed plan of a relaxed task, per state."""
 
@@ -46,6 +58,13 @@ cdef class Explorer:
     cdef int* goal
     cdef int* is_goal
     cdef int* operator
+    # Per relaxed operator, the facts a state must hold and lack for its effect to
+    # happen (its real operator's precondition and the effect's condition).
+    cdef int* need_start
+    cdef int* need
+    cdef int* lack_start
+    cdef int* lack
+    cdef bytes state_bytes
     # Per exploration (reused): costs, supporters, counters, the queue, plan marks.
     cdef long long* cost
     cdef int* supporter
@@ -86,6 +105,16 @@ cdef class Explorer:
         self.num_goals = len(relaxed.goal)
         self.is_goal = _ints([1 if flag else 0 for flag in relaxed.is_goal])
         self.operator = _ints(relaxed.operator)
+        starts, facts_needed = [0], []
+        for mask in relaxed.pre_mask:
+            facts_needed.extend(_bits(mask))
+            starts.append(len(facts_needed))
+        self.need_start, self.need = _ints(starts), _ints(facts_needed)
+        starts, facts_lacking = [0], []
+        for mask in relaxed.neg_mask:
+            facts_lacking.extend(_bits(mask))
+            starts.append(len(facts_lacking))
+        self.lack_start, self.lack = _ints(starts), _ints(facts_lacking)
         self.num_real = max([index + 1 for index in relaxed.operator] + [1])
         self.cost = <long long*> malloc(max(self.num_facts, 1) * sizeof(long long))
         self.supporter = <int*> malloc(max(self.num_facts, 1) * sizeof(int))
@@ -115,6 +144,10 @@ cdef class Explorer:
         free(self.goal)
         free(self.is_goal)
         free(self.operator)
+        free(self.need_start)
+        free(self.need)
+        free(self.lack_start)
+        free(self.lack)
         free(self.cost)
         free(self.supporter)
         free(self.accumulated)
@@ -183,6 +216,7 @@ cdef class Explorer:
         cdef long long level, value
         cdef bytes packed = state.to_bytes(self.num_bytes, "little")
         cdef const unsigned char* data = packed
+        self.state_bytes = packed
         cdef unsigned char byte
         for i in range(self.num_facts):
             self.cost[i] = INFINITE
@@ -253,11 +287,44 @@ cdef class Explorer:
     def relaxed_plan(self, state):
         """hFF and the relaxed operators of the relaxed plan from hadd best supporters
         (each real operator's cost counted once)."""
-        cdef int top = 0, fact, op, i, real
-        cdef long long total = 0
         cdef list plan = []
+        total = self._plan(state, plan)
+        return total, plan
+
+    def preferred(self, state):
+        """hFF and the preferred operators: the real operators of the relaxed plan whose
+        relaxed operator's precondition holds in ``state``, ascending."""
+        cdef list plan = []
+        cdef int op, i, ok
+        cdef const unsigned char* data
+        total = self._plan(state, plan)
+        if not plan:
+            return total, []
+        data = self.state_bytes
+        chosen = set()
+        for op in plan:
+            if self.operator[op] < 0:
+                continue
+            ok = 1
+            for i in range(self.need_start[op], self.need_start[op + 1]):
+                if not (data[self.need[i] >> 3] >> (self.need[i] & 7)) & 1:
+                    ok = 0
+                    break
+            if ok:
+                for i in range(self.lack_start[op], self.lack_start[op + 1]):
+                    if (data[self.lack[i] >> 3] >> (self.lack[i] & 7)) & 1:
+                        ok = 0
+                        break
+            if ok:
+                chosen.add(self.operator[op])
+        return total, sorted(chosen)
+
+    cdef object _plan(self, object state, list plan):
+        """hFF, with the relaxed plan's operators appended to ``plan``."""
+        cdef int top = 0, op, i, real
+        cdef long long total = 0
         if not self._explore(state, True):
-            return math.inf, plan
+            return math.inf
         for i in range(self.num_ops):
             self.marked[i] = 0
         for i in range(self.num_real):
@@ -281,4 +348,4 @@ cdef class Explorer:
             for i in range(self.pre_list_start[op], self.pre_list_start[op + 1]):
                 self.stack[top] = self.pre_list[i]
                 top += 1
-        return total, plan
+        return total

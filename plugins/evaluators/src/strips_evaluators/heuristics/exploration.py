@@ -31,6 +31,8 @@ class Explorer(Protocol):
 
     def relaxed_plan(self, state: int) -> tuple[float, list[int]]: ...
 
+    def preferred(self, state: int) -> tuple[float, list[int]]: ...
+
 
 def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
     """The compiled explorer of ``relaxed`` when it is built (and ``compiled`` is not
@@ -71,6 +73,21 @@ class PythonExplorer:
     def relaxed_plan(self, state: int) -> tuple[float, list[int]]:
         value, plan = relaxed_plan(self.relaxed, state)
         return value, list(plan)
+
+    def preferred(self, state: int) -> tuple[float, list[int]]:
+        """hFF and the real operators of the relaxed plan whose relaxed operator's
+        precondition (with the effect's condition) holds in ``state``, ascending."""
+        value, plan = relaxed_plan(self.relaxed, state)
+        relaxed = self.relaxed
+        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
+        chosen = {
+            operator[op]
+            for op in plan
+            if operator[op] >= 0
+            and state & pre_masks[op] == pre_masks[op]
+            and not state & neg_masks[op]
+        }
+        return value, sorted(chosen)
 
 
 #: ``supporter`` entry of a fact that holds in the state (nothing achieves it).

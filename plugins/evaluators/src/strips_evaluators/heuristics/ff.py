@@ -17,14 +17,13 @@ from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
-from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
+from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
 
 
 @frozen
 class FFEstimator:
-    relaxed: RelaxedTask
     explorer: Explorer
     goal_mask: int
 
@@ -36,19 +35,7 @@ class FFEstimator:
     def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
         if state & self.goal_mask == self.goal_mask:
             return 0, []
-        value, plan = self.explorer.relaxed_plan(state)
-        if not plan:
-            return value, []
-        relaxed = self.relaxed
-        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
-        preferred = {
-            operator[op]
-            for op in plan
-            if operator[op] >= 0
-            and state & pre_masks[op] == pre_masks[op]
-            and not state & neg_masks[op]
-        }
-        return value, sorted(preferred)
+        return self.explorer.preferred(state)
 
 
 @frozen
@@ -65,5 +52,4 @@ class FFHeuristic:
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> FFEstimator:
-        relaxed = relax(task, factor_sharing=SHARING)
-        return FFEstimator(relaxed, explorer(relaxed), task.goal_mask)
+        return FFEstimator(explorer(relax(task, factor_sharing=SHARING)), task.goal_mask)
