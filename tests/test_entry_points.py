@@ -83,6 +83,13 @@ def test_an_edited_entry_points_file_is_read_again(tmp_path):
     assert "fake" not in run(tmp_path, tmp_path / "site")[0].split(",")
 
 
+def test_each_installation_has_its_own_cache_file(tmp_path, monkeypatch):
+    monkeypatch.setenv(entry_points.CACHE_ENV, str(tmp_path))
+    here = entry_points._cache_file("strips_framework")
+    monkeypatch.setattr(sys, "prefix", str(tmp_path / "another-venv"))
+    assert entry_points._cache_file("strips_framework") not in (here, None)
+
+
 def test_entry_point_values_name_modules_or_attributes():
     assert entry_points.load("os.path") is os.path
     assert entry_points.load("os.path:join") is os.path.join

@@ -9,7 +9,8 @@ together with a *signature* of the installation it was read from: for every
 modification time and size of its ``entry_points.txt``. Computing the signature is one directory listing per
 :data:`sys.path` entry and one ``stat`` per distribution; any install, uninstall,
 upgrade or edited ``entry_points.txt`` changes it and the next lookup reads the metadata
-again (and rewrites the file). The cache lives under ``$XDG_CACHE_HOME/strips-framework`` (default
+again (and rewrites the file). There is one file per group and Python installation
+(``sys.prefix``: each virtual environment has its own). The cache lives under ``$XDG_CACHE_HOME/strips-framework`` (default
 ``~/.cache``); where it cannot be written, every lookup reads the metadata.
 """
 
@@ -17,6 +18,7 @@ from __future__ import annotations
 
 import os
 import sys
+import zlib
 from pathlib import Path
 
 #: Where the cache files go (a test points it elsewhere).
@@ -74,7 +76,10 @@ def _cache_file(group: str) -> Path | None:
     base = os.environ.get(CACHE_ENV) or os.path.join(os.path.expanduser("~"), ".cache")
     if not os.path.isabs(base):
         return None
-    return Path(base, "strips-framework", f"entry-points-{group}.txt")
+    # One file per Python installation (each virtual environment has its own), so that
+    # several of them do not keep overwriting one another's.
+    installation = zlib.crc32(sys.prefix.encode())
+    return Path(base, "strips-framework", f"entry-points-{group}-{installation:08x}.txt")
 
 
 def _signature() -> str:
