@@ -84,7 +84,7 @@ def _cache_file(group: str) -> Path | None:
 
 def _signature() -> str:
     """What is installed, as far as entry points can tell (see the module docstring)."""
-    parts = [sys.executable, sys.version.replace("\n", " ")]
+    parts = [sys.version.replace("\n", " ")]
     for entry in sys.path:
         try:
             listing = os.scandir(entry or ".")
