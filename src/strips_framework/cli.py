@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import json
+import os
 import sys
 import warnings
 from collections.abc import Sequence
@@ -117,6 +117,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:  # outside a search (a search reports its statistics)
         print("strips: interrupted", file=sys.stderr)
         return exit_codes.INTERRUPTED
+    except BrokenPipeError:  # `strips plugins | head`: the reader has what it wanted
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no error at exit
+        return exit_codes.SOLVED
     except Exception as error:
         culprit = planner.registry.raised_in(error) if planner is not None else None
         if culprit is None:
@@ -168,6 +171,8 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
         config = {chosen.table_of(kind): chosen.choice(kind).name for kind in planner.kinds_used()}
         where = str(domain) if domain is not None else None
         document = report.document(result, status, clock.elapsed(), str(problem), where, config)
+        import json  # only --json needs it: start-up counts on small tasks
+
         print(json.dumps(document, indent=2))
     elif result is not None:
         print("\n".join(report.text_lines(result)))

@@ -2,7 +2,9 @@
 
 Builtin implementations are registered exactly like outside ones: each module in
 :data:`DEFAULT_PLUGINS` holds ``@hookimpl`` functions, as an installed distribution's
-entry-point module in the group ``strips_framework`` does. Nothing is loaded at import
+entry-point module in the group ``strips_framework`` does (the installed entry points come
+from :mod:`strips_framework.entry_points`, which caches them by what is installed, so a
+run does not pay for :mod:`importlib.metadata`). Nothing is loaded at import
 time; :func:`get_plugin_manager` builds a fresh manager on each call, and the
 :class:`Registry` calls a kind's hook only when that kind is first looked up (a plugin
 module that imports its classes inside its hooks costs nothing until then). Set
@@ -12,7 +14,6 @@ module that imports its classes inside its hooks costs nothing until then). Set
 from __future__ import annotations
 
 import importlib
-import importlib.metadata
 import os
 import traceback
 import warnings
@@ -22,7 +23,7 @@ import attrs
 import pluggy
 from attrs import frozen
 
-from strips_framework import hookspecs
+from strips_framework import entry_points, hookspecs
 from strips_framework.errors import PluginError
 
 DEFAULT_PLUGINS = ("strips_framework.builtins",)
@@ -71,28 +72,29 @@ class PluginManager(pluggy.PluginManager):
         self.distributions: dict[str, str] = {}
 
     def load_installed(self) -> None:
-        """Register every installed plugin (entry points in the group ``strips_framework``)
-        one at a time. A plugin that cannot be imported, or that implements a hook that
-        does not exist (a misspelling), is left out with a warning naming it and its
-        distribution: one broken third-party plugin must not disable every command,
-        ``strips plugins`` included."""
-        for dist in importlib.metadata.distributions():
-            for entry in dist.entry_points:
-                if entry.group != hookspecs.PROJECT or self.has_plugin(entry.name):
-                    continue
-                try:
-                    self.register(entry.load(), name=entry.name)
-                    self.check_pending()
-                except Exception as error:  # noqa: BLE001 - third-party code, any failure
-                    if self.has_plugin(entry.name):
-                        self.unregister(name=entry.name)
-                    warnings.warn(
-                        f"plugin {entry.name!r} (from {dist.metadata['Name']}) failed to load "
-                        f"and is left out: {type(error).__name__}: {error}",
-                        stacklevel=2,
-                    )
-                    continue
-                self.distributions[entry.name] = dist.metadata["Name"]
+        """Register every installed plugin (entry points in the group ``strips_framework``,
+        from the cached list of :mod:`.entry_points`) one at a time, as pluggy's
+        ``load_setuptools_entrypoints`` does (a name already registered or blocked is
+        skipped). A plugin that cannot be imported, or that implements a hook that does not
+        exist (a misspelling), is left out with a warning naming it and its distribution:
+        one broken third-party plugin must not disable every command, ``strips plugins``
+        included."""
+        for name, value, distribution in entry_points.entry_points(hookspecs.PROJECT):
+            if self.has_plugin(name) or self.is_blocked(name):
+                continue
+            try:
+                self.register(entry_points.load(value), name=name)
+                self.check_pending()
+            except Exception as error:  # noqa: BLE001 - third-party code, any failure
+                if self.has_plugin(name):
+                    self.unregister(name=name)
+                warnings.warn(
+                    f"plugin {name!r} (from {distribution}) failed to load and is left out: "
+                    f"{type(error).__name__}: {error}",
+                    stacklevel=2,
+                )
+                continue
+            self.distributions[name] = distribution
 
 
 def get_plugin_manager(
@@ -182,10 +184,8 @@ class Registry:
                         f"{words} {name!r} is registered twice: by {known.plugin!r} "
                         f"and by {impl.plugin_name!r}"
                     )
-                found[name] = Registration(
-                    kind, name, cls, impl.plugin_name,
-                    self._manager.distributions.get(impl.plugin_name),
-                )
+                distribution = self._manager.distributions.get(impl.plugin_name)
+                found[name] = Registration(kind, name, cls, impl.plugin_name, distribution)
         self._by_kind[kind] = found
         return found
 

@@ -12,7 +12,6 @@ import os
 import re
 import sys
 import tempfile
-import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -57,6 +56,8 @@ def read_text(path: Path, what: str = "the file") -> str:
 
 def read_toml(path: Path, what: str) -> dict[str, Any]:
     """The TOML file at ``path`` as a dict; syntax errors give their line and column."""
+    import tomllib  # not at the top: a run without a config file does not pay for it
+
     text = read_text(path, what)
     try:
         return tomllib.loads(text)

@@ -24,6 +24,9 @@ LOCAL = [
     ("rooms-domain.pddl", "rooms-2.pddl"),
     ("blocks-domain.pddl", "blocks-3.pddl"),
     ("crates-domain.pddl", "crates-3.pddl"),
+    ("briefcase-domain.pddl", "briefcase-2.pddl"),
+    ("elevator-domain.pddl", "elevator-1.pddl"),
+    ("switches-domain.pddl", "switches-1.pddl"),
 ]
 SMALL_IPC = ["blocks", "gripper", "logistics", "miconic", "openstacks", "pegsol"]
 
@@ -44,7 +47,7 @@ def walk_and_compare(task: PddlTask, steps: int, seed: int) -> None:
     evaluator = AxiomEvaluator(ground_task)
     validator = PlanValidator(task)
     derived = {rule.head.predicate for rule in task.domain.derived}
-    changed = {atom.predicate for a in task.domain.actions for atom in (*a.add, *a.delete)}
+    changed = {atom.predicate for a in task.domain.actions for atom in a.changed_atoms()}
     rng = random.Random(seed)
     state, lifted = ground_task.init, validator.initial()
     for _ in range(steps):

@@ -42,14 +42,19 @@ def domain_with(action: str, extra: str = "") -> str:
             "unknown object or constant 'c'",
         ),
         (
-            "(:action a :parameters (?x) :effect (when (p ?x) (p ?x)))",
+            "(:action a :parameters (?x) :effect (when (p ?x) (increase (total-cost) 1)))",
             4,
-            "not supported: conditional effects",
+            "not supported: action costs inside conditional or universal effects",
         ),
         (
-            "(:action a :parameters (?x) :effect (forall (?y) (p ?y)))",
+            "(:action a :parameters (?x) :effect (forall (?x) (p ?x)))",
             4,
-            "not supported: universally quantified effects",
+            "variable ?x is already bound in this action",
+        ),
+        (
+            "(:action a :parameters (?x) :effect (when (p ?y) (p ?x)))",
+            4,
+            "unknown variable ?y",
         ),
         (
             "(:action a :parameters (?x) :effect (increase (fuel) 1))",

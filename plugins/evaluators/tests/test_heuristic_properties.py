@@ -2,39 +2,35 @@
 against the true cost to the goal (a backward Dijkstra over the explicit state space).
 
 The tasks are IPC first tasks (grounded from PDDL) and seeded random tasks with action
-costs (zero-cost operators included), negative preconditions and axioms.
+costs (zero-cost operators included), negative preconditions and axioms, half of them with
+conditional effects.
 """
 
 from __future__ import annotations
 
 import math
-import random
-from pathlib import Path
 
 import pytest
 
 from strips_evaluators import plugin
-from strips_evaluators.heuristics.additive import additive_exploration
-from strips_evaluators.heuristics.hmax import max_exploration, unit_cost_hmax
+from strips_evaluators.heuristics.exploration import (
+    additive_exploration,
+    max_exploration,
+    unit_cost_hmax,
+)
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding import ground
-from strips_framework.grounding.axioms import AxiomEvaluator
-from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask, mask_of
+from strips_framework.grounding.task import GroundTask
 from strips_framework.pddl import find_domain, load_task
 from strips_framework.plugins import Registry
 from strips_framework.search.limits import Limits
 from strips_framework.testing.ground_space import TaskSpace
 
-
-def _find_ipc() -> Path | None:
-    """``shared/bench/ipc`` beside the repository; without it the IPC cases skip."""
-    for parent in Path(__file__).resolve().parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
+from random_tasks import random_task
+from shared_bench import shared_bench
 
 
-IPC = _find_ipc()
+IPC = shared_bench("ipc")  # without it the IPC cases skip
 PDDL_DOMAINS = ["blocks", "gripper", "depot", "zenotravel", "transport", "miconic", "pegsol"]
 HEURISTICS = {cls.name: cls for cls in plugin.strips_register_heuristics()}
 
@@ -46,53 +42,26 @@ def ipc_task(domain: str) -> GroundTask:
     return ground(load_task(find_domain(problem), problem))
 
 
-def random_task(seed: int) -> GroundTask:
-    """A small random task: 7 basic facts, 2 derived ones, 10 operators with costs 0..3."""
-    rng = random.Random(seed)
-    basic = list(range(7))
-    derived = [7, 8]
-    operators = []
-    for index in range(10):
-        pre = tuple(rng.sample(basic + derived, rng.randint(0, 2)))
-        add = tuple(rng.sample(basic, rng.randint(1, 2)))
-        delete = tuple(f for f in rng.sample(basic, rng.randint(0, 2)) if f not in add)
-        pre_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)) if f not in pre)
-        operators.append(
-            GroundOperator(f"(op{index})", pre, add, delete, rng.randint(0, 3), pre_neg)
-        )
-    axioms = (
-        GroundAxiom(7, tuple(rng.sample(basic, 2))),
-        GroundAxiom(8, tuple(rng.sample(basic, 1)), tuple(rng.sample(basic, 1))),
-    )
-    task = GroundTask(
-        name=f"random{seed}",
-        facts=tuple(f"(f{i})" for i in range(9)),
-        operators=tuple(operators),
-        init=0,
-        goal=tuple(rng.sample(basic + derived, rng.randint(1, 3))),
-        axioms=axioms,
-        derived=tuple(derived),
-        uses_costs=True,
-    )
-    init = AxiomEvaluator(task).evaluate(mask_of(tuple(rng.sample(basic, rng.randint(1, 3)))))
-    return GroundTask(
-        task.name, task.facts, task.operators, init, task.goal, axioms, task.derived, True
-    )
-
-
 def optimal_costs(task: GroundTask) -> dict[int, float]:
     """h* of every state reachable from the initial state (``math.inf``: dead end), from
     the conformance kit's exhaustive exploration."""
     return TaskSpace(task, max_states=1_000_000).cost_to_go
 
 
-TASKS = [*(f"ipc:{domain}" for domain in PDDL_DOMAINS), *(f"random:{seed}" for seed in range(40))]
+TASKS = [
+    *(f"ipc:{domain}" for domain in PDDL_DOMAINS),
+    *(f"random:{seed}" for seed in range(40)),
+    *(f"conditional:{seed}" for seed in range(40)),
+]
 
 
 @pytest.fixture(scope="module", params=TASKS)
 def task_and_costs(request) -> tuple[GroundTask, dict[int, float]]:
     kind, name = request.param.split(":")
-    task = ipc_task(name) if kind == "ipc" else random_task(int(name))
+    if kind == "ipc":
+        task = ipc_task(name)
+    else:
+        task = random_task(int(name), conditional=kind == "conditional")
     return task, optimal_costs(task)
 
 
@@ -121,11 +90,14 @@ def test_dead_ends_are_real_and_goals_score_zero(task_and_costs) -> None:
 
 def test_relaxation_bounds_are_ordered(task_and_costs) -> None:
     """hmax <= LM-cut <= h+ <= hFF, and hmax <= hadd; all relaxed heuristics agree on
-    which states are relaxed dead ends."""
+    which states are relaxed dead ends. With conditional effects LM-cut can fall below
+    hmax (a cut lowers the cost of its operators' other effects too), not below 0."""
     task, optimal = task_and_costs
     h = {name: values(task, name, optimal) for name in ("hmax", "hadd", "ff", "lmcut")}
+    conditional = any(op.effects for op in task.operators)
     for state in optimal:
-        assert h["hmax"][state] <= h["lmcut"][state] <= h["ff"][state], task.facts_of(state)
+        assert h["lmcut"][state] <= h["ff"][state], task.facts_of(state)
+        assert conditional or h["hmax"][state] <= h["lmcut"][state], task.facts_of(state)
         assert h["hmax"][state] <= h["hadd"][state]
         assert len({h[name][state] == math.inf for name in h}) == 1
 
@@ -145,8 +117,8 @@ def test_ff_prefers_some_operator_unless_at_a_goal_or_dead_end(task_and_costs) -
     """Without negative preconditions, a relaxed plan always starts with an operator that
     is applicable in the state."""
     task, optimal = task_and_costs
-    if any(op.pre_neg for op in task.operators):
-        pytest.skip("negative preconditions can block every relaxed-plan operator")
+    if any(op.pre_neg or any(e.condition_neg for e in op.effects) for op in task.operators):
+        pytest.skip("negative conditions can block every relaxed-plan operator")
     estimator = HEURISTICS["ff"]().for_task(task)
     for state in optimal:
         value, preferred = estimator.estimate_with_preferred(state)

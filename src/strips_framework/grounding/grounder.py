@@ -2,7 +2,10 @@
 
 Each action becomes one reachability rule per disjunct of its normalized precondition,
 each derived predicate one rule per disjunct of its body, and a goal that is not a plain
-conjunction of atoms a rule for the derived fact ``(@goal)``. Relaxed reachability finds
+conjunction of atoms a rule for the derived fact ``(@goal)``. A conditional or universal
+effect becomes one rule per disjunct of its condition, over the action's and its own
+variables, whose body is the condition plus the action's applicability atom (as in Fast
+Downward's translator); the applicability atoms serve reachability only. Relaxed reachability finds
 the rule instances that can ever fire; only those become ground operators and axioms.
 Static facts (of predicates no action changes) are checked during grounding and left out
 of the task; operators that change nothing are dropped, and (by default) so are the facts
@@ -23,13 +26,15 @@ from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.normalize import Clause, Normalizer
 from strips_framework.grounding.reachability import Args, FactIndex, Reachability, Rule, Slots
-from strips_framework.grounding.relevance import RawAxiom, RawOperator, relevant
-from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundTask
+from strips_framework.grounding.relevance import RawAxiom, RawEffect, RawOperator, relevant
+from strips_framework.grounding.task import GroundAxiom, GroundEffect, GroundOperator, GroundTask
 from strips_framework.pddl.formulas import Atom, Parameter
-from strips_framework.pddl.task import Action, PddlTask, missing_cost
+from strips_framework.pddl.task import Action, ConditionalEffect, PddlTask, missing_cost
 
 #: The derived fact that stands for a goal which is not a conjunction of atoms.
 GOAL = "@goal"
+#: Prefix of the predicate that says an action applies, premise of its effects' rules.
+APPLICABLE = "@applicable:"
 
 Fact = tuple[str, Args]
 #: An atom compiled against a rule's slots: the fact numbers of its predicate by
@@ -39,11 +44,13 @@ Pattern = tuple[dict[Args, int], Callable[[Args], Args]]
 
 @frozen
 class _Source:
-    """What a reachability rule stands for: an action, or the head of an axiom."""
+    """What a reachability rule stands for: an action, one of its conditional effects,
+    or the head of an axiom."""
 
     clause: Clause
     action: Action | None = None
     head: Atom | None = None
+    effect: ConditionalEffect | None = None
 
 
 def ground(task: PddlTask, prune_irrelevant: bool = True) -> GroundTask:
@@ -63,7 +70,7 @@ class _Grounder:
         self.prune_irrelevant = prune_irrelevant
         domain = task.domain
         self.derived = {rule.head.predicate for rule in domain.derived} | {GOAL}
-        changed = {atom.predicate for a in domain.actions for atom in (*a.add, *a.delete)}
+        changed = {atom.predicate for a in domain.actions for atom in a.changed_atoms()}
         self.static: dict[str, FactIndex] = {
             pred.name: FactIndex()
             for pred in domain.predicates
@@ -83,8 +90,20 @@ class _Grounder:
     def ground(self) -> GroundTask:
         normalizer = Normalizer(self.task)
         for action in self.task.domain.actions:
+            heads = action.add
+            if action.conditional:
+                applicable = _applicable(action)
+                heads += (applicable,)
+                for effect in action.conditional:
+                    for clause in normalizer.clauses(effect.condition):
+                        self._add_rule(
+                            _Source(clause, action=action, effect=effect),
+                            action.params + effect.params,
+                            effect.add,
+                            (applicable,),
+                        )
             for clause in normalizer.clauses(action.precondition):
-                self._add_rule(_Source(clause, action=action), action.params, action.add)
+                self._add_rule(_Source(clause, action=action), action.params, heads)
         for derived in self.task.domain.derived:
             for clause in normalizer.clauses(derived.body):
                 self._add_rule(_Source(clause, head=derived.head), derived.params, (derived.head,))
@@ -110,13 +129,20 @@ class _Grounder:
         return self._task(reach)
 
     def _add_rule(
-        self, source: _Source, params: tuple[Parameter, ...], heads: tuple[Atom, ...]
+        self,
+        source: _Source,
+        params: tuple[Parameter, ...],
+        heads: tuple[Atom, ...],
+        premises: tuple[Atom, ...] = (),
     ) -> None:
+        """A rule for ``source``: ``premises`` join the positive atoms of its clause."""
         clause = source.clause
         everything = params + clause.params
         action = source.action
         mentions = clause.negative
-        if action is not None:
+        if source.effect is not None:
+            mentions += source.effect.delete
+        elif action is not None:
             mentions += action.delete
             if isinstance(action.cost, Atom):
                 mentions += (action.cost,)
@@ -125,7 +151,7 @@ class _Grounder:
             Rule(
                 params=tuple(param.name for param in everything),
                 domains=tuple(frozenset(self.task.objects_of(param.types)) for param in everything),
-                body=tuple(atom for atom in clause.positive if atom.predicate != "="),
+                body=premises + tuple(atom for atom in clause.positive if atom.predicate != "="),
                 heads=heads,
                 absent=tuple(atom for atom in clause.negative if atom.predicate in self.static),
                 equal=tuple(_pair(atom) for atom in clause.positive if atom.predicate == "="),
@@ -136,7 +162,12 @@ class _Grounder:
 
     def _task(self, reach: Reachability) -> GroundTask:
         goal_facts = self._goal_facts()
-        facts = {(pred, args) for pred, known in reach.reached.items() for args in known}
+        facts = {
+            (pred, args)
+            for pred, known in reach.reached.items()
+            if not pred.startswith(APPLICABLE)
+            for args in known
+        }
         names = sorted((fact_name(*fact), fact) for fact in facts | goal_facts)
         number = {fact: i for i, (_, fact) in enumerate(names)}
         operators, axioms = self._records(reach, number)
@@ -181,10 +212,19 @@ class _Grounder:
         operators: set[RawOperator] = set()
         axioms: set[RawAxiom] = set()
         strata = self._strata()
-        for source, slots, instances in zip(self.sources, reach.slots, reach.instances):
+        rules = list(zip(self.sources, reach.slots, reach.instances))
+        #: Per action, the conditional effects of each binding of its parameters.
+        effects: dict[str, dict[Args, list[RawEffect]]] = {}
+        for source, slots, instances in rules:
+            if source.effect is not None:
+                builder = _Builder(self, source, slots, by_predicate)
+                builder.effects(instances, effects.setdefault(source.action.name, {}))
+        for source, slots, instances in rules:
+            if source.effect is not None:
+                continue
             builder = _Builder(self, source, slots, by_predicate)
             if source.action is not None:
-                operators.update(builder.operators(instances))
+                operators.update(builder.operators(instances, effects.get(source.action.name, {})))
             elif source.head is not None:
                 axioms.update(builder.axioms(instances, strata[source.head.predicate]))
         return sorted(operators), sorted(axioms)
@@ -270,11 +310,12 @@ class _Builder:
         self.pre_neg = patterns(source.clause.negative)
         action = source.action
         if action is not None:
-            self.add = patterns(action.add)
-            self.delete = patterns(action.delete)
+            changes = source.effect or action
+            self.add = patterns(changes.add)
+            self.delete = patterns(changes.delete)
             self.arity = len(action.params)
             cost_args = action.cost.args if isinstance(action.cost, Atom) else ()
-            self.cost_args = _picker(slots.of(cost_args))
+            self.cost_args = _picker(slots.of(cost_args if source.effect is None else ()))
         if source.head is not None:
             (self.head,) = patterns((source.head,))
 
@@ -289,19 +330,35 @@ class _Builder:
                 found.add(fact)
         return found
 
-    def operators(self, instances: list[Args]) -> list[RawOperator]:
+    def _parts(self, key: Args) -> tuple[Args, set[int], set[int], set[int], set[int]] | None:
+        """The slot values of an instance of an action's or effect's rule, and its
+        condition's facts (positive, negated), adds and deletes; None when the condition
+        contradicts itself."""
+        values = key + self.constants
+        condition = self._facts(self.pre, values)
+        condition_neg = self._facts(self.pre_neg, values)
+        if condition & condition_neg:
+            return None
+        return values, condition, condition_neg, self._facts(self.add, values), self._facts(
+            self.delete, values
+        )
+
+    def operators(
+        self, instances: list[Args], effects: dict[Args, list[RawEffect]]
+    ) -> list[RawOperator]:
+        """The operators of the instances; ``effects`` holds the conditional effects of
+        each binding of the action's parameters."""
         action = self.source.action
         assert action is not None
         result = []
         for key in instances:
-            values = key + self.constants
-            pre = self._facts(self.pre, values)
-            pre_neg = self._facts(self.pre_neg, values)
-            if pre & pre_neg:
+            parts = self._parts(key)
+            if parts is None:
                 continue
-            add = self._facts(self.add, values)
-            delete = self._facts(self.delete, values) - add
-            if add <= pre and not delete:
+            values, pre, pre_neg, add, delete = parts
+            conditional = _simplify(pre, pre_neg, add, delete, effects.get(key[: self.arity], ()))
+            delete -= add
+            if add <= pre and not delete and not conditional:
                 continue  # changes nothing wherever it applies
             cost_args = self.cost_args(values)
             result.append(
@@ -312,9 +369,22 @@ class _Builder:
                     tuple(sorted(add)),
                     tuple(sorted(delete)),
                     self.grounder.cost(action, cost_args),
+                    conditional,
                 )
             )
         return result
+
+    def effects(self, instances: list[Args], into: dict[Args, list[RawEffect]]) -> None:
+        """File the effects of the instances of a conditional effect's rule under the
+        binding of the action's parameters they belong to."""
+        for key in instances:
+            parts = self._parts(key)
+            if parts is None:
+                continue
+            _, condition, condition_neg, add, delete = parts
+            if add or delete:
+                effect = _raw_effect(condition, condition_neg, add, delete)
+                into.setdefault(key[: self.arity], []).append(effect)
 
     def axioms(self, instances: list[Args], stratum: int) -> list[RawAxiom]:
         facts, pick = self.head
@@ -330,6 +400,49 @@ class _Builder:
         return result
 
 
+def _simplify(
+    pre: set[int],
+    pre_neg: set[int],
+    add: set[int],
+    delete: set[int],
+    effects: list[RawEffect] | tuple[()],
+) -> tuple[RawEffect, ...]:
+    """The conditional ``effects`` of an operator with these preconditions, simplified:
+    an effect whose condition contradicts them never fires and is dropped, condition facts
+    the preconditions settle are left out, and an effect left without condition joins
+    ``add`` and ``delete`` (updated in place). Adds win over deletes, as in PDDL."""
+    conditional: list[tuple[set[int], set[int], set[int], set[int]]] = []
+    for effect in effects:
+        condition, condition_neg = set(effect.condition), set(effect.condition_neg)
+        if condition & pre_neg or condition_neg & pre:
+            continue
+        condition -= pre
+        condition_neg -= pre_neg
+        if condition or condition_neg:
+            conditional.append((condition, condition_neg, set(effect.add), set(effect.delete)))
+        else:
+            add.update(effect.add)
+            delete.update(effect.delete)
+    result = set()
+    for condition, condition_neg, effect_add, effect_delete in conditional:
+        effect_add -= add
+        effect_delete -= add | delete | effect_add
+        if effect_add or effect_delete:
+            result.add(_raw_effect(condition, condition_neg, effect_add, effect_delete))
+    return tuple(sorted(result))
+
+
+def _raw_effect(
+    condition: set[int], condition_neg: set[int], add: set[int], delete: set[int]
+) -> RawEffect:
+    return RawEffect(
+        tuple(sorted(condition)),
+        tuple(sorted(condition_neg)),
+        tuple(sorted(add)),
+        tuple(sorted(delete)),
+    )
+
+
 def _renumber(facts: tuple[int, ...], new: list[int]) -> tuple[int, ...]:
     """``facts`` in the final numbering (``new[old]``, -1 for a fact left out)."""
     return tuple([new[fact] for fact in facts if new[fact] >= 0])
@@ -341,16 +454,21 @@ def _final_operators(
     """The operators in the final numbering, ``kept`` facts of ``len(new)`` kept. Where
     facts were left out, an operator whose remaining adds are among its preconditions and
     which deletes nothing remaining changes nothing that matters: it is left out too."""
-    if kept == len(new):
-        return tuple(
-            GroundOperator(op.name, op.pre, op.add, op.delete, op.cost, op.pre_neg) for op in raw
-        )
     result = []
     for op in raw:
         pre, add, delete = _renumber(op.pre, new), _renumber(op.add, new), _renumber(op.delete, new)
-        if delete or not set(add) <= set(pre):
+        effects = []
+        for effect in op.effects:
+            effect_add, effect_delete = _renumber(effect.add, new), _renumber(effect.delete, new)
+            if effect_add or effect_delete:
+                condition = _renumber(effect.condition, new)
+                condition_neg = _renumber(effect.condition_neg, new)
+                effects.append(GroundEffect(condition, condition_neg, effect_add, effect_delete))
+        if kept == len(new) or delete or effects or not set(add) <= set(pre):
             result.append(
-                GroundOperator(op.name, pre, add, delete, op.cost, _renumber(op.pre_neg, new))
+                GroundOperator(
+                    op.name, pre, add, delete, op.cost, _renumber(op.pre_neg, new), tuple(effects)
+                )
             )
     return tuple(result)
 
@@ -363,6 +481,11 @@ def _picker(slots: tuple[int, ...]) -> Callable[[Args], Args]:
         (slot,) = slots
         return lambda values: (values[slot],)
     return lambda values: ()
+
+
+def _applicable(action: Action) -> Atom:
+    """The atom that holds for the bindings under which ``action`` applies."""
+    return Atom(APPLICABLE + action.name, tuple(param.name for param in action.params))
 
 
 def _pair(atom: Atom) -> tuple[str, str]:

@@ -19,6 +19,15 @@ from collections.abc import Sequence
 from typing import NamedTuple
 
 
+class RawEffect(NamedTuple):
+    """A conditional effect before the final numbering."""
+
+    condition: tuple[int, ...]
+    condition_neg: tuple[int, ...]
+    add: tuple[int, ...]
+    delete: tuple[int, ...]
+
+
 class RawOperator(NamedTuple):
     """A ground operator before the final numbering (a tuple, so records sort and hash
     cheaply; fields in the order operators are sorted)."""
@@ -29,6 +38,7 @@ class RawOperator(NamedTuple):
     add: tuple[int, ...]
     delete: tuple[int, ...]
     cost: int
+    effects: tuple[RawEffect, ...] = ()
 
 
 class RawAxiom(NamedTuple):
@@ -47,7 +57,9 @@ def relevant(
 
     A worklist of ``(fact, polarity)`` pairs: a fact needed true makes the operators that
     add it (and the axioms deriving it) relevant, a fact needed false those that delete
-    it (and its axioms); a relevant operator or axiom needs its own conditions."""
+    it (and its axioms); a relevant operator or axiom needs its own conditions. Those of
+    an operator include the conditions of all its conditional effects, relevant or not:
+    an effect kept for what it adds must not fire more often for what it deletes."""
     adders: dict[int, list[int]] = {}
     deleters: dict[int, list[int]] = {}
     for index, op in enumerate(operators):
@@ -55,6 +67,11 @@ def relevant(
             adders.setdefault(fact, []).append(index)
         for fact in op.delete:
             deleters.setdefault(fact, []).append(index)
+        for effect in op.effects:
+            for fact in effect.add:
+                adders.setdefault(fact, []).append(index)
+            for fact in effect.delete:
+                deleters.setdefault(fact, []).append(index)
     by_head: dict[int, list[RawAxiom]] = {}
     for axiom in axioms:
         by_head.setdefault(axiom.head, []).append(axiom)
@@ -70,7 +87,9 @@ def relevant(
         for index in (adders if polarity else deleters).get(fact, ()):
             if index not in chosen:
                 chosen.add(index)
-                conditions.append((operators[index].pre, operators[index].pre_neg))
+                op = operators[index]
+                conditions.append((op.pre, op.pre_neg))
+                conditions.extend((e.condition, e.condition_neg) for e in op.effects)
         for positive, negative in conditions:
             todo.extend((condition, True) for condition in positive)
             todo.extend((condition, False) for condition in negative)

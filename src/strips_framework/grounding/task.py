@@ -14,7 +14,9 @@ always has its derived facts evaluated.
 
 from __future__ import annotations
 
-from attrs import field, frozen
+from typing import Any
+
+from attrs import Factory, field, frozen
 
 
 def mask_of(facts: tuple[int, ...]) -> int:
@@ -25,9 +27,37 @@ def mask_of(facts: tuple[int, ...]) -> int:
     return mask
 
 
+def _mask(of: str) -> Any:
+    """A field computed at construction: the bitset of the fact-number field ``of``."""
+    return field(
+        init=False, default=Factory(lambda self: mask_of(getattr(self, of)), takes_self=True)
+    )
+
+
+@frozen
+class GroundEffect:
+    """A conditional effect of a ground operator: when every fact of ``condition`` holds
+    and none of ``condition_neg`` does in the state the operator is applied in, the
+    ``add`` facts become true and the ``delete`` facts false."""
+
+    condition: tuple[int, ...]
+    condition_neg: tuple[int, ...]
+    add: tuple[int, ...]
+    delete: tuple[int, ...]
+    condition_mask: int = _mask("condition")
+    condition_neg_mask: int = _mask("condition_neg")
+    add_mask: int = _mask("add")
+    delete_mask: int = _mask("delete")
+
+    def fires(self, state: int) -> bool:
+        mask = self.condition_mask
+        return state & mask == mask and not state & self.condition_neg_mask
+
+
 @frozen
 class GroundOperator:
-    """One ground action. ``name`` is its IPC plan step, e.g. ``(pick-up a)``."""
+    """One ground action. ``name`` is its IPC plan step, e.g. ``(pick-up a)``. ``add`` and
+    ``delete`` are its unconditional effects, ``effects`` the conditional ones."""
 
     name: str
     pre: tuple[int, ...]
@@ -36,33 +66,24 @@ class GroundOperator:
     cost: int = 1
     #: Facts that must be false (PDDL negative preconditions).
     pre_neg: tuple[int, ...] = ()
-    pre_mask: int = field(init=False)
-    pre_neg_mask: int = field(init=False)
-    add_mask: int = field(init=False)
-    delete_mask: int = field(init=False)
-
-    @pre_mask.default
-    def _pre_mask(self) -> int:
-        return mask_of(self.pre)
-
-    @pre_neg_mask.default
-    def _pre_neg_mask(self) -> int:
-        return mask_of(self.pre_neg)
-
-    @add_mask.default
-    def _add_mask(self) -> int:
-        return mask_of(self.add)
-
-    @delete_mask.default
-    def _delete_mask(self) -> int:
-        return mask_of(self.delete)
+    effects: tuple[GroundEffect, ...] = ()
+    pre_mask: int = _mask("pre")
+    pre_neg_mask: int = _mask("pre_neg")
+    add_mask: int = _mask("add")
+    delete_mask: int = _mask("delete")
 
     def applicable(self, state: int) -> bool:
         return state & self.pre_mask == self.pre_mask and not state & self.pre_neg_mask
 
     def apply(self, state: int) -> int:
-        """The successor before axioms: deletes first, then adds (PDDL semantics)."""
-        return (state & ~self.delete_mask) | self.add_mask
+        """The successor before axioms: the conditional effects whose condition holds in
+        ``state`` join the unconditional ones; deletes first, then adds (PDDL semantics)."""
+        delete, add = self.delete_mask, self.add_mask
+        for effect in self.effects:
+            if effect.fires(state):
+                delete |= effect.delete_mask
+                add |= effect.add_mask
+        return (state & ~delete) | add
 
 
 @frozen
@@ -91,11 +112,7 @@ class GroundTask:
     derived: tuple[int, ...] = ()
     #: True when the task minimizes total-cost (``:action-costs``); else cost = length.
     uses_costs: bool = False
-    goal_mask: int = field(init=False)
-
-    @goal_mask.default
-    def _goal_mask(self) -> int:
-        return mask_of(self.goal)
+    goal_mask: int = _mask("goal")
 
     def is_goal(self, state: int) -> bool:
         return state & self.goal_mask == self.goal_mask

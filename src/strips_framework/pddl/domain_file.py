@@ -6,10 +6,17 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from strips_framework.errors import InputError
-from strips_framework.pddl.formulas import TRUE, Atom, Parameter
+from strips_framework.pddl.formulas import TRUE, And, Atom, Formula, Parameter
 from strips_framework.pddl.reader import TOTAL_COST, Reader, header, integer, sections, show_value
 from strips_framework.pddl.sexpr import Node, Source
-from strips_framework.pddl.task import Action, Cost, DerivedPredicate, Domain, Predicate
+from strips_framework.pddl.task import (
+    Action,
+    ConditionalEffect,
+    Cost,
+    DerivedPredicate,
+    Domain,
+    Predicate,
+)
 
 
 def read_domain(source: Source) -> Domain:
@@ -62,7 +69,7 @@ def read_domain(source: Source) -> Domain:
             derived.append(_derived(reader, section))
     heads = {rule.head.predicate for rule in derived}
     for action in actions:
-        for atom in (*action.add, *action.delete):
+        for atom in action.changed_atoms():
             if atom.predicate in heads:
                 raise InputError(
                     source.path,
@@ -141,25 +148,39 @@ def _action(reader: Reader, section: Node, functions: set[str]) -> Action:
     variables = frozenset(param.name for param in params)
     pre = parts.get(":precondition")
     precondition = TRUE if pre is None else reader.formula(pre, section, variables)
-    add: list[Atom] = []
-    delete: list[Atom] = []
-    costs: list[Cost] = []
+    effects = _Effects()
     effect = parts.get(":effect")
     if effect is not None:
-        _effect(
-            reader,
-            reader.node(effect, section, "an effect"),
-            variables,
-            functions,
-            (add, delete, costs),
-        )
+        _effect(reader, reader.node(effect, section, "an effect"), variables, functions, effects)
     cost: Cost | None = None
-    if costs:
-        if len(costs) > 1:
+    if effects.costs:
+        if len(effects.costs) > 1:
             raise reader.error(section, "expected at most one (increase (total-cost) ...) effect")
-        cost = costs[0]
+        cost = effects.costs[0]
     line, _ = reader.source.position(section.offset)
-    return Action(name, params, precondition, tuple(add), tuple(delete), cost, line)
+    return Action(
+        name,
+        params,
+        precondition,
+        tuple(effects.add),
+        tuple(effects.delete),
+        cost,
+        line,
+        tuple(effects.conditional),
+    )
+
+
+class _Effects:
+    """What an action's effect says: the literals of one scope (the unconditional ones at
+    the top), and the action-wide costs and conditional effects."""
+
+    def __init__(
+        self, costs: list[Cost] | None = None, conditional: list[ConditionalEffect] | None = None
+    ) -> None:
+        self.add: list[Atom] = []
+        self.delete: list[Atom] = []
+        self.costs: list[Cost] = [] if costs is None else costs
+        self.conditional: list[ConditionalEffect] = [] if conditional is None else conditional
 
 
 def _effect(
@@ -167,28 +188,55 @@ def _effect(
     node: Node,
     variables: frozenset[str],
     functions: set[str],
-    into: tuple[list[Atom], list[Atom], list[Cost]],
+    into: _Effects,
+    params: tuple[Parameter, ...] = (),
+    conditions: tuple[Formula, ...] = (),
 ) -> None:
-    add, delete, costs = into
+    """Read ``node`` into ``into``; ``params`` and ``conditions`` are those of the
+    enclosing ``forall`` and ``when`` (nested ones accumulate)."""
     head = node[0] if node else None
     if head is None:
         return
     if head == "and":
         for part in node[1:]:
-            _effect(reader, reader.node(part, node, "an effect"), variables, functions, into)
+            part_node = reader.node(part, node, "an effect")
+            _effect(reader, part_node, variables, functions, into, params, conditions)
     elif head == "not":
         reader.arity(node, 1)
-        delete.append(reader.atom(reader.node(node[1], node, "an atom"), variables))
+        into.delete.append(reader.atom(reader.node(node[1], node, "an atom"), variables))
     elif head == "increase":
-        costs.append(_cost(reader, node, variables, functions))
-    elif head == "when":
-        raise reader.error(node, "not supported: conditional effects (when)")
-    elif head == "forall":
-        raise reader.error(node, "not supported: universally quantified effects (forall)")
+        if params or conditions:
+            raise reader.error(
+                node, "not supported: action costs inside conditional or universal effects"
+            )
+        into.costs.append(_cost(reader, node, variables, functions))
+    elif head in ("when", "forall"):
+        reader.arity(node, 2)
+        if head == "when":
+            conditions += (reader.formula(node[1], node, variables),)
+        else:
+            new = tuple(
+                reader.typed_list(node, list(reader.node(node[1], node, "a parameter list")), True)
+            )
+            for param in new:
+                if param.name in variables:
+                    raise reader.error(
+                        node, f"variable {param.name} is already bound in this action"
+                    )
+            params += new
+            variables = variables | {param.name for param in new}
+        scope = _Effects(into.costs, into.conditional)
+        inner = reader.node(node[2], node, "an effect")
+        _effect(reader, inner, variables, functions, scope, params, conditions)
+        if scope.add or scope.delete:
+            condition = conditions[0] if len(conditions) == 1 else And(conditions)
+            into.conditional.append(
+                ConditionalEffect(params, condition, tuple(scope.add), tuple(scope.delete))
+            )
     elif head in ("decrease", "assign", "scale-up", "scale-down"):
         raise reader.error(node, f"not supported: numeric effect '{head}'")
     else:
-        add.append(reader.atom(node, variables))
+        into.add.append(reader.atom(node, variables))
 
 
 def _cost(reader: Reader, node: Node, variables: frozenset[str], functions: set[str]) -> Cost:

@@ -3,6 +3,8 @@ later step (grounding, validation, translation to a framework problem) needs."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from attrs import field, frozen
 
 from strips_framework.errors import InputError
@@ -19,8 +21,23 @@ class Predicate:
 
 
 @frozen
+class ConditionalEffect:
+    """``(forall (params) (when condition effect))``: for every binding of ``params`` to
+    objects under which ``condition`` holds in the state the action is applied in, the
+    ``add`` atoms become true and the ``delete`` atoms false. A universal effect without
+    ``when`` has the condition ``TRUE``; a ``when`` without ``forall`` has no params."""
+
+    params: tuple[Parameter, ...]
+    condition: Formula
+    add: tuple[Atom, ...]
+    delete: tuple[Atom, ...]
+
+
+@frozen
 class Action:
-    """A lifted action: STRIPS add/delete effects plus an optional ``total-cost`` increase."""
+    """A lifted action: the unconditional STRIPS add/delete effects, the conditional and
+    universal ones (``when``, ``forall``), and an optional ``total-cost`` increase. All
+    conditions are evaluated in the state before the action; deletes apply before adds."""
 
     name: str
     params: tuple[Parameter, ...]
@@ -29,6 +46,15 @@ class Action:
     delete: tuple[Atom, ...]
     cost: Cost | None = None
     line: int = 0
+    conditional: tuple[ConditionalEffect, ...] = ()
+
+    def changed_atoms(self) -> Iterator[Atom]:
+        """Every atom an effect of the action may add or delete."""
+        yield from self.add
+        yield from self.delete
+        for effect in self.conditional:
+            yield from effect.add
+            yield from effect.delete
 
 
 @frozen

@@ -8,6 +8,8 @@ analysis and the provers run on PDDL input.
   it to objects of the right type.
 - Derived predicates become axioms ``forall x: body -> head`` the prover uses.
 - Action costs are dropped: means-ends analysis does not optimize cost.
+- Conditional and universal effects are refused: a STRIPS operator's add and delete lists
+  are fixed, and compiling them away multiplies the operators.
 
 The provers reason in an open world: the absence of a fact proves nothing. PDDL's closed
 world is compiled in where it is used: negation is pushed down to the atoms, and a
@@ -116,6 +118,15 @@ class _Translator:
         return [(name, *args) for args in product(*domains) if args not in true]
 
     def _operator(self, action: Action) -> OperatorSchema:
+        if action.conditional:
+            raise InputError(
+                self.task.domain_path,
+                action.line,
+                None,
+                f"not supported by means-ends analysis: the conditional or universal effects "
+                f"of action {action.name!r} (STRIPS operators have fixed add and delete "
+                "lists); use a forward search strategy",
+            )
         params = {param.name: Param(param.name.lstrip("?")) for param in action.params}
         typed = [self._typed(param, params[param.name]) for param in action.params]
         body = self._formula(action.precondition, params, self.task.domain_path, action.line)

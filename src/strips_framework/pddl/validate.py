@@ -2,7 +2,8 @@
 
 The validator evaluates preconditions and the goal as PDDL formulas over a set of ground
 atoms (closed world), computes derived predicates by a stratified fixpoint over the typed
-objects, and applies effects deletes-first. Because it shares nothing with the grounder
+objects, and applies effects deletes-first, conditional effects (``when``, ``forall``)
+evaluated on the state before the step. Because it shares nothing with the grounder
 but the reader, it also checks the grounder: a plan forward search found on the ground
 task must be valid here. A failing check explains the first failing step: the
 precondition part that is false, with the action's bindings, or the goal part not reached.
@@ -67,10 +68,22 @@ class PlanValidator:
             if atom.predicate not in self.derived
         )
 
-    def successor(self, state: State, action: Action, binding: dict[str, str]) -> State:
-        """The state after ``action``: deletes first, then adds."""
-        deleted = {(atom.predicate, substitute(atom.args, binding)) for atom in action.delete}
-        added = {(atom.predicate, substitute(atom.args, binding)) for atom in action.add}
+    def successor(
+        self, state: State, action: Action, binding: dict[str, str], model: State | None = None
+    ) -> State:
+        """The state after ``action``: deletes first, then adds. Conditional effects fire
+        for the bindings of their variables whose condition holds in ``model``, the
+        closure of ``state`` (computed when not given)."""
+        deleted, added = _ground(action.delete, binding), _ground(action.add, binding)
+        if action.conditional:
+            model = self.closure(state) if model is None else model
+            for effect in action.conditional:
+                names = [param.name for param in effect.params]
+                for values in self._bindings(effect.params):
+                    inner = {**binding, **dict(zip(names, values))}
+                    if self.holds(effect.condition, inner, model):
+                        deleted |= _ground(effect.delete, inner)
+                        added |= _ground(effect.add, inner)
         return frozenset((state - deleted) | added)
 
     def check(self, steps: Sequence[str]) -> PlanCheck:
@@ -92,7 +105,7 @@ class PlanValidator:
                     f"satisfied{where}: {reason}",
                     cost,
                 )
-            state = self.successor(state, action, binding)
+            state = self.successor(state, action, binding, model)
             cost += self._cost(action, binding)
         model = self.closure(state)
         goal = self.task.problem.goal
@@ -203,6 +216,10 @@ class PlanValidator:
                     shown = ", ".join(f"{n} = {v}" for n, v in zip(names, values))
                     return f"{self._why_not(formula.body, inner, model)} (for {shown})"
         return f"{show(formula)} is false"
+
+
+def _ground(atoms: tuple[Atom, ...], binding: dict[str, str]) -> set[GroundAtom]:
+    return {(atom.predicate, substitute(atom.args, binding)) for atom in atoms}
 
 
 def _step_text(action: Action, binding: dict[str, str]) -> str:

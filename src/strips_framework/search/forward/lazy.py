@@ -65,12 +65,12 @@ class LazyGreedySearch(ForwardStrategy):
                     if best_h != math.inf:
                         frontier.reward_progress()
                     best_h = h
-                preferred = frozenset(preferred)
                 successors = applicable(state)
                 run.generated += len(successors)
                 base = number * width
-                for op in successors:
-                    frontier.push(h, base + op, op in preferred)
+                frontier.push_all(
+                    h, [base + op for op in successors], {base + op for op in preferred}
+                )
             while True:
                 if not frontier:
                     return None

@@ -9,12 +9,18 @@ entry and one with the entries reached by a preferred operator: it pops from the
 non-empty list that has been used least (the full list on ties), and each time the search
 makes progress (a new lowest heuristic value) the preferred list is *boosted*: it is
 credited ``boost`` extra turns.
+
+Both keep, as Fast Downward does, one FIFO bucket (a deque) per key and a heap of the keys
+that have a bucket: a push is a deque append, and the heap sees each key once per
+stretch in which its bucket is non-empty. Lazy search pushes every successor of a state
+under the same key, so :meth:`push_all` appends them to the bucket in one call.
 """
 
 from __future__ import annotations
 
-import heapq
-import itertools
+from collections import deque
+from collections.abc import Collection, Sequence
+from heapq import heappop, heappush
 from typing import Generic, Protocol, TypeVar
 
 Item = TypeVar("Item")
@@ -24,6 +30,8 @@ class OpenList(Protocol[Item]):
     def __len__(self) -> int: ...
 
     def push(self, key: object, item: Item, preferred: bool = False) -> None: ...
+
+    def push_all(self, key: object, items: Sequence[Item], preferred: Collection[Item]) -> None: ...
 
     def pop(self) -> Item: ...
 
@@ -35,53 +43,100 @@ def open_list(preferred: bool, boost: int) -> OpenList[Item]:
     return AlternationOpenList(boost) if preferred else BestFirstOpenList()
 
 
+class _Buckets(Generic[Item]):
+    """Items by key: a FIFO deque per key and a heap of the keys with a deque."""
+
+    __slots__ = ("buckets", "keys", "size")
+
+    def __init__(self) -> None:
+        self.buckets: dict[object, deque[Item]] = {}
+        self.keys: list = []
+        self.size = 0
+
+    def bucket(self, key: object) -> deque[Item]:
+        bucket = self.buckets.get(key)
+        if bucket is None:
+            bucket = self.buckets[key] = deque()
+            heappush(self.keys, key)
+        return bucket
+
+    def pop(self) -> Item:
+        key = self.keys[0]
+        bucket = self.buckets[key]
+        item = bucket.popleft()
+        if not bucket:
+            del self.buckets[key]
+            heappop(self.keys)
+        self.size -= 1
+        return item
+
+
 class BestFirstOpenList(Generic[Item]):
     def __init__(self) -> None:
-        self._heap: list[tuple[object, int, Item]] = []
-        self._order = itertools.count()
+        self._items: _Buckets[Item] = _Buckets()
 
     def __len__(self) -> int:
-        return len(self._heap)
+        return self._items.size
 
     def push(self, key: object, item: Item, preferred: bool = False) -> None:
         """Insert ``item`` under ``key``; ``preferred`` only matters to alternation."""
-        heapq.heappush(self._heap, (key, next(self._order), item))
+        self._items.bucket(key).append(item)
+        self._items.size += 1
+
+    def push_all(self, key: object, items: Sequence[Item], preferred: Collection[Item]) -> None:
+        """Insert ``items`` under ``key``, in order."""
+        if items:
+            self._items.bucket(key).extend(items)
+            self._items.size += len(items)
 
     def pop(self) -> Item:
-        return heapq.heappop(self._heap)[2]
+        return self._items.pop()
 
     def reward_progress(self) -> None:
         """Nothing to boost in a single list."""
 
 
 class AlternationOpenList(Generic[Item]):
-    """Two heaps of ``(key, order, item)``: every entry, and the preferred ones (the
-    lists are inlined here because the lazy search pushes every successor through them)."""
+    """Every entry, and the preferred ones again (an entry in both can be popped from
+    each, as in Fast Downward)."""
 
     def __init__(self, boost: int) -> None:
         self.boost = boost
-        self._all: list[tuple[object, int, Item]] = []
-        self._preferred: list[tuple[object, int, Item]] = []
-        self._order = itertools.count()
+        self._all: _Buckets[Item] = _Buckets()
+        self._preferred: _Buckets[Item] = _Buckets()
         #: Turns taken by each list (lower goes next); boosting lowers the preferred one's.
         self._turns = [0, 0]
 
     def __len__(self) -> int:
-        return len(self._all) + len(self._preferred)
+        return self._all.size + self._preferred.size
 
     def push(self, key: object, item: Item, preferred: bool = False) -> None:
-        entry = (key, next(self._order), item)
-        heapq.heappush(self._all, entry)
+        self._all.bucket(key).append(item)
+        self._all.size += 1
         if preferred:
-            heapq.heappush(self._preferred, entry)
+            self._preferred.bucket(key).append(item)
+            self._preferred.size += 1
+
+    def push_all(self, key: object, items: Sequence[Item], preferred: Collection[Item]) -> None:
+        """Insert ``items`` under ``key``, in order; those in ``preferred`` go into the
+        preferred list too."""
+        if not items:
+            return
+        self._all.bucket(key).extend(items)
+        self._all.size += len(items)
+        if preferred:
+            chosen = [item for item in items if item in preferred]
+            if chosen:
+                self._preferred.bucket(key).extend(chosen)
+                self._preferred.size += len(chosen)
 
     def pop(self) -> Item:
         turns = self._turns
-        if self._preferred and (turns[1] < turns[0] or not self._all):
+        if self._preferred.size and (turns[1] < turns[0] or not self._all.size):
             turns[1] += 1
-            return heapq.heappop(self._preferred)[2]
+            return self._preferred.pop()
         turns[0] += 1
-        return heapq.heappop(self._all)[2]
+        return self._all.pop()
 
     def reward_progress(self) -> None:
         self._turns[1] -= self.boost

@@ -3,7 +3,8 @@
 Duplicate detection is a dict from state (an int bitset) to its number; the search tree
 is kept as two compact arrays, the parent's number and the operator that led from it,
 from which the plan is read back at the end. Derived facts are evaluated for every new
-state when the task has axioms; otherwise successor states are a mask operation.
+state when the task has axioms, and conditional effects tested when it has any;
+otherwise successor states are a mask operation.
 """
 
 from __future__ import annotations
@@ -34,7 +35,16 @@ class StateSpace:
 
     def successor(self, state: int, operator: int) -> int:
         """The state that applying ``operator`` in ``state`` makes, derived facts included."""
-        result = (state & self.successors.keep[operator]) | self.successors.add[operator]
+        successors = self.successors
+        if successors.effects is None:
+            result = (state & successors.keep[operator]) | successors.add[operator]
+        else:
+            keep, add = successors.keep[operator], successors.add[operator]
+            for condition, condition_neg, delete, effect_add in successors.effects[operator]:
+                if state & condition == condition and not state & condition_neg:
+                    keep &= ~delete
+                    add |= effect_add
+            result = (state & keep) | add
         return self.derive(result) if self.derive is not None else result
 
     def add(self, state: int, parent: int, operator: int) -> int:

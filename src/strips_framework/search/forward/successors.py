@@ -31,9 +31,21 @@ class SuccessorGenerator:
         self._buckets = {bit: tuple(entries) for bit, entries in buckets.items()}
         self._key_mask = sum(self._buckets)
         self._unkeyed = tuple(unkeyed)
-        #: Per operator: the mask of facts it keeps (all but its deletes), and its adds.
+        #: Per operator: the mask of facts it keeps (all but its unconditional deletes),
+        #: and its unconditional adds.
         self.keep = tuple(~op.delete_mask for op in operators)
         self.add = tuple(op.add_mask for op in operators)
+        #: Per operator: its conditional effects as (condition, negated condition, delete,
+        #: add) masks; None when no operator has any, so plain tasks pay nothing for them.
+        self.effects: tuple[tuple[tuple[int, int, int, int], ...], ...] | None = None
+        if any(op.effects for op in operators):
+            self.effects = tuple(
+                tuple(
+                    (e.condition_mask, e.condition_neg_mask, e.delete_mask, e.add_mask)
+                    for e in op.effects
+                )
+                for op in operators
+            )
 
     def applicable(self, state: int) -> list[int]:
         """The numbers of the operators applicable in ``state``."""

@@ -22,7 +22,7 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
-from strips_evaluators.heuristics.relaxation import facts_in, relax
+from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in, relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
 
@@ -37,10 +37,8 @@ class LandmarkCountEstimator:
     initially: int
     #: Cost of each landmark's cheapest achiever; None on unit-cost tasks (all 1).
     weight: list[int] | None
-    #: Per relaxed operator: the real operator's index and its applicability masks.
-    operator: list[int]
-    pre_masks: list[int]
-    neg_masks: list[int]
+    #: The relaxed task: real operators of relaxed ones and their applicability masks.
+    relaxed: RelaxedTask
 
     def estimate(self, state: int) -> float:
         return self._count(state)[0]
@@ -52,8 +50,8 @@ class LandmarkCountEstimator:
         value, missing, again = self._count(state)
         if not missing and not again:
             return value, []
-        graph, operator = self.graph, self.operator
-        pre_masks, neg_masks = self.pre_masks, self.neg_masks
+        graph, relaxed = self.graph, self.relaxed
+        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
         label = graph.label
         ready = [fact for fact in facts_in(missing) if label[fact] & missing == 1 << fact]
         preferred = {
@@ -112,14 +110,11 @@ class LandmarkCountHeuristic:
         weight = None
         if not relaxed.unit_cost:
             weight = [min((relaxed.cost[op] for op in ops), default=0) for ops in graph.achievers]
-        operators = task.operators
         return LandmarkCountEstimator(
             graph=graph,
             goal_mask=task.goal_mask,
             informative=informative,
             initially=graph.landmarks & task.init,
             weight=weight,
-            operator=relaxed.operator,
-            pre_masks=[operators[i].pre_mask if i >= 0 else 0 for i in relaxed.operator],
-            neg_masks=[operators[i].pre_neg_mask if i >= 0 else 0 for i in relaxed.operator],
+            relaxed=relaxed,
         )

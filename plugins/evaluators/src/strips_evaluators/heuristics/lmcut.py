@@ -14,6 +14,13 @@ LM-cut finds disjunctive action landmarks one at a time and adds up their costs:
 
 The landmarks are cost-disjoint (each operator's cost is shared out among them), so the
 sum never exceeds the optimal plan cost: admissible.
+
+Conditional effects are relaxed operators of their own (see :mod:`.relaxation`); a cut
+then stands for the set of real operators its relaxed operators come from, every plan uses
+one of them, and the cut's cost is taken off all relaxed operators of those operators.
+That keeps the sum admissible (one application of an operator can cross several cuts
+through different effects, but pays for them from one cost), as the basic extension of
+Röger, Pommerening & Helmert (2014); Fast Downward's LM-cut refuses such tasks.
 """
 
 from __future__ import annotations
@@ -25,7 +32,7 @@ from typing import ClassVar
 import attrs
 from attrs import frozen
 
-from strips_evaluators.heuristics.hmax import max_exploration
+from strips_evaluators.heuristics.exploration import max_exploration
 from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in, relax
 from strips_framework.grounding.task import GroundTask
 
@@ -46,6 +53,9 @@ class LMCutEstimator:
     #: Each operator's add effect when it has just one (most do), else MANY_EFFECTS:
     #: the cut search then needs no loop over effects.
     only_effect: list[int]
+    #: Per relaxed operator, the relaxed operators of the same real operator (itself
+    #: included), which share its cost; None when each real operator has one.
+    siblings: list[tuple[int, ...]] | None
 
     def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
         return self.estimate(state), ()
@@ -74,9 +84,13 @@ class LMCutEstimator:
             cut = self._cut(start, goal_zone, supporter, supported)
             cut_cost = min(op_cost[op] for op in cut)
             total += cut_cost
+            siblings = self.siblings
+            if siblings is not None:
+                cut = list(dict.fromkeys(other for op in cut for other in siblings[op]))
             for op in cut:
                 op_cost[op] -= cut_cost
-            self._lower_hmax(cut, hmax, op_cost, supporter, supporter_cost, supported)
+            reached = [op for op in cut if supporter[op] != NO_SUPPORTER]
+            self._lower_hmax(reached, hmax, op_cost, supporter, supporter_cost, supported)
         return total
 
     def _goal_zone(self, op_cost: list[int], supporter: list[int]) -> bytearray:
@@ -207,6 +221,8 @@ class LMCutHeuristic:
             add=[*relaxed.add, (goal_fact,)],
             cost=[*relaxed.cost, 0],
             operator=[*relaxed.operator, AXIOM],
+            pre_mask=[*relaxed.pre_mask, 0],
+            neg_mask=[*relaxed.neg_mask, 0],
             pre_count=[*relaxed.pre_count, len(relaxed.goal)],
             pre_of=pre_of,
         )
@@ -215,4 +231,13 @@ class LMCutHeuristic:
             for fact in effects:
                 achievers[fact].append(op)
         only_effect = [effects[0] if len(effects) == 1 else MANY_EFFECTS for effects in relaxed.add]
-        return LMCutEstimator(relaxed, task.goal_mask, goal_fact, achievers, only_effect)
+        siblings = None
+        if relaxed.shared_costs:
+            of_operator: dict[int, list[int]] = {}
+            for op, index in enumerate(relaxed.operator):
+                of_operator.setdefault(index, []).append(op)
+            siblings = [
+                tuple(of_operator[index]) if index >= 0 else (op,)
+                for op, index in enumerate(relaxed.operator)
+            ]
+        return LMCutEstimator(relaxed, task.goal_mask, goal_fact, achievers, only_effect, siblings)

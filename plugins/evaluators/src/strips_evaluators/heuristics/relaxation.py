@@ -2,9 +2,14 @@
 
 Relaxed heuristics (hmax, hadd, hFF, LM-cut, landmarks) ignore delete effects and negative
 preconditions; an axiom becomes a zero-cost relaxed operator from its positive body to its
-head. Everything is stored as flat lists indexed by relaxed-operator or fact number, so
-that an exploration touches only Python lists and small ints: its inner loop runs once
-per (fact, operator it is a precondition of) pair, and a counter per operator says when
+head. A conditional effect becomes a relaxed operator of its own whose preconditions are
+the operator's and the effect's condition, at the operator's cost, as in Fast Downward's
+relaxation heuristics; such siblings share their operator's cost (hFF counts an operator
+once, LM-cut lowers their costs together).
+
+Everything is stored as flat lists indexed by relaxed-operator or fact number, so that an
+exploration touches only Python lists and small ints: its inner loop runs once per
+(fact, operator it is a precondition of) pair, and a counter per operator says when
 all its preconditions are reached. Operators without preconditions get the artificial
 fact :attr:`RelaxedTask.true_fact`, which holds in every state, so that explorations
 need no special case for them.
@@ -27,8 +32,9 @@ CONJUNCTION = -2
 
 @frozen
 class RelaxedTask:
-    """Relaxed operators ``0..len(pre)-1``: real operators with add effects (in task
-    order), then axioms. Operators without add effects are left out: they reach nothing."""
+    """Relaxed operators ``0..len(pre)-1``: real operators with add effects and their
+    conditional effects with adds (in task order), then axioms. Operators without add
+    effects are left out: they reach nothing."""
 
     num_facts: int
     pre: list[tuple[int, ...]]
@@ -36,6 +42,13 @@ class RelaxedTask:
     cost: list[int]
     #: Index into ``task.operators``, or :data:`AXIOM` or :data:`CONJUNCTION` (negative).
     operator: list[int]
+    #: Per relaxed operator, the masks of the facts a state must hold and lack for its
+    #: effect to happen: the operator's preconditions and, for a conditional effect, its
+    #: condition (0 for axioms and conjunctions). Preferred operators are tested with them.
+    pre_mask: list[int]
+    neg_mask: list[int]
+    #: True when some operator has several relaxed operators (conditional effects).
+    shared_costs: bool
     #: Number of preconditions of each relaxed operator: the template of the counters.
     pre_count: list[int]
     #: For each fact, the relaxed operators it is a precondition of.
@@ -64,6 +77,8 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
     add: list[tuple[int, ...]] = []
     cost: list[int] = []
     operator: list[int] = []
+    pre_mask: list[int] = []
+    neg_mask: list[int] = []
     true_fact = len(task.facts)
     for index, op in enumerate(task.operators):
         if op.add:
@@ -71,11 +86,24 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
             add.append(_unique(op.add))
             cost.append(op.cost)
             operator.append(index)
+            pre_mask.append(op.pre_mask)
+            neg_mask.append(op.pre_neg_mask)
+        for effect in op.effects:
+            if effect.add:
+                pre.append(_unique(op.pre + effect.condition) or (true_fact,))
+                add.append(_unique(effect.add))
+                cost.append(op.cost)
+                operator.append(index)
+                pre_mask.append(op.pre_mask | effect.condition_mask)
+                neg_mask.append(op.pre_neg_mask | effect.condition_neg_mask)
+    shared_costs = len(set(operator)) < len(operator)
     for axiom in task.axioms:
         pre.append(_unique(axiom.body) or (true_fact,))
         add.append((axiom.head,))
         cost.append(0)
         operator.append(AXIOM)
+        pre_mask.append(0)
+        neg_mask.append(0)
     num_facts = true_fact + 1 + extra_facts
     if factor_sharing:
         pre, conjunctions = factor_shared_pairs(pre, num_facts, factor_sharing)
@@ -84,6 +112,8 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
         add.extend((node,) for node in range(num_facts - len(conjunctions), num_facts))
         cost.extend(0 for _ in conjunctions)
         operator.extend(CONJUNCTION for _ in conjunctions)
+        pre_mask.extend(0 for _ in conjunctions)
+        neg_mask.extend(0 for _ in conjunctions)
     pre_of: list[list[int]] = [[] for _ in range(num_facts)]
     for op, facts in enumerate(pre):
         for fact in facts:
@@ -100,6 +130,9 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
         add=add,
         cost=cost,
         operator=operator,
+        pre_mask=pre_mask,
+        neg_mask=neg_mask,
+        shared_costs=shared_costs,
         pre_count=pre_count,
         pre_of=pre_of,
         true_fact=true_fact,

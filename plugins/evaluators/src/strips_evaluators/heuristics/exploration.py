@@ -1,0 +1,246 @@
+"""The relaxed explorations behind hadd, hFF and hmax (and LM-cut's hmax), and which
+implementation runs them per state.
+
+The functions here are the pure-Python reference. When the compiled module
+(``_explore.pyx``, built by ``pip install`` with Cython) is importable, :func:`explorer`
+gives its :class:`Explorer` instead: the same algorithms over C arrays, with the same
+supporters, relaxed plans and values (``tests/test_compiled.py`` compares them state by
+state and search by search). ``STRIPS_PURE_PYTHON=1`` in the environment picks the
+reference anyway. LM-cut and the landmark heuristics run the reference only.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from heapq import heappop, heappush
+from typing import Protocol
+
+from strips_evaluators.heuristics.relaxation import RelaxedTask, start_exploration
+
+#: Set to 1 to run the pure-Python explorations even where the compiled ones are built.
+PURE_PYTHON_SWITCH = "STRIPS_PURE_PYTHON"
+
+
+class Explorer(Protocol):
+    """Per-state relaxed values of one relaxed task (goal states are the caller's)."""
+
+    def hadd(self, state: int) -> float: ...
+
+    def hmax(self, state: int) -> float: ...
+
+    def relaxed_plan(self, state: int) -> tuple[float, list[int]]: ...
+
+    def preferred(self, state: int) -> tuple[float, list[int]]: ...
+
+
+def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
+    """The compiled explorer of ``relaxed`` when it is built (and ``compiled`` is not
+    False, nor the environment switch set), else the pure-Python one; ``compiled=True``
+    insists on the compiled one (ImportError when it is not built)."""
+    if compiled is None:
+        compiled = not os.environ.get(PURE_PYTHON_SWITCH)
+        if compiled:
+            try:
+                from strips_evaluators.heuristics import _explore
+            except ImportError:
+                compiled = False
+    if compiled:
+        from strips_evaluators.heuristics import _explore
+
+        return _explore.Explorer(relaxed)
+    return PythonExplorer(relaxed)
+
+
+class PythonExplorer:
+    """The reference :class:`Explorer`: the functions of this module."""
+
+    def __init__(self, relaxed: RelaxedTask) -> None:
+        self.relaxed = relaxed
+
+    def hadd(self, state: int) -> float:
+        cost, _ = additive_exploration(self.relaxed, state)
+        return sum(cost[fact] for fact in self.relaxed.goal)
+
+    def hmax(self, state: int) -> float:
+        relaxed = self.relaxed
+        if relaxed.unit_cost:
+            return unit_cost_hmax(relaxed, state)
+        unused = [0] * len(relaxed.pre)
+        cost = max_exploration(relaxed, state, relaxed.cost, unused, unused[:])
+        return max(cost[fact] for fact in relaxed.goal)
+
+    def relaxed_plan(self, state: int) -> tuple[float, list[int]]:
+        value, plan = relaxed_plan(self.relaxed, state)
+        return value, list(plan)
+
+    def preferred(self, state: int) -> tuple[float, list[int]]:
+        """hFF and the real operators of the relaxed plan whose relaxed operator's
+        precondition (with the effect's condition) holds in ``state``, ascending."""
+        value, plan = relaxed_plan(self.relaxed, state)
+        relaxed = self.relaxed
+        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
+        chosen = {
+            operator[op]
+            for op in plan
+            if operator[op] >= 0
+            and state & pre_masks[op] == pre_masks[op]
+            and not state & neg_masks[op]
+        }
+        return value, sorted(chosen)
+
+
+#: ``supporter`` entry of a fact that holds in the state (nothing achieves it).
+IN_STATE = -1
+
+
+def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float], list[int]]:
+    """Fact costs and best supporters under hadd, by a generalized Dijkstra from ``state``.
+
+    A fact's cost is final when its bucket is taken, so the exploration stops once every
+    goal fact has been taken; costs of facts not yet settled then are upper bounds, and
+    unreached facts cost ``math.inf``. ``supporter[f]`` is the relaxed operator that gave
+    ``f`` its cost (the first to reach the minimum), :data:`IN_STATE` for state facts.
+
+    The queue is a dict of buckets (one list of facts per cost) with a heap of the costs
+    that have a bucket: most pushes are a list append, and the heap only sees each
+    distinct cost once. Facts reached at the cost being taken (by a zero-cost operator)
+    go to a new bucket of that cost, taken next.
+    """
+    pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
+    start, cost = start_exploration(relaxed, state)
+    supporter = [IN_STATE] * relaxed.num_facts
+    accumulator = relaxed.accumulator[:]
+    bits = relaxed.count_bits
+    left_mask = (1 << bits) - 1
+    buckets = {0: start}
+    levels = [0]
+    goals_left = len(relaxed.goal)
+    while levels:
+        level = heappop(levels)
+        # Adds the fact's cost and counts one precondition off, in one step.
+        increment = (level << bits) - 1
+        for fact in buckets.pop(level):
+            if cost[fact] != level:
+                continue  # reached more cheaply after it was put in this bucket
+            if is_goal[fact]:
+                goals_left -= 1
+                if not goals_left:
+                    return cost, supporter
+            for op in pre_of[fact]:
+                packed = accumulator[op] + increment
+                accumulator[op] = packed
+                if not packed & left_mask:
+                    value = packed >> bits
+                    for effect in add[op]:
+                        if value < cost[effect]:
+                            cost[effect] = value
+                            supporter[effect] = op
+                            bucket = buckets.setdefault(value, [])
+                            if not bucket:
+                                heappush(levels, value)
+                            bucket.append(effect)
+    return cost, supporter
+
+
+def unit_cost_hmax(relaxed: RelaxedTask, state: int) -> float:
+    """hmax when operators cost 1 and axioms 0: breadth-first over fact layers.
+
+    Layer ``k`` holds the facts of cost ``k``; an operator fires when its last
+    precondition is reached, and that precondition's layer is its costliest. Facts an
+    axiom reaches join the current layer (the loop sees items appended while it runs).
+    Stops as soon as the last goal fact is reached.
+    """
+    pre_of, add, op_cost, is_goal = relaxed.pre_of, relaxed.add, relaxed.cost, relaxed.is_goal
+    layer, cost = start_exploration(relaxed, state)
+    remaining = relaxed.pre_count[:]
+    goals_left = len(relaxed.goal)
+    depth = 0
+    while layer:
+        following: list[int] = []
+        for fact in layer:
+            if cost[fact] != depth:
+                continue  # reached again, more cheaply, by an axiom
+            if is_goal[fact]:
+                goals_left -= 1
+                if not goals_left:
+                    return depth
+            for op in pre_of[fact]:
+                left = remaining[op] - 1
+                remaining[op] = left
+                if not left:
+                    if op_cost[op]:
+                        target, reached = following, depth + 1
+                    else:
+                        target, reached = layer, depth
+                    for effect in add[op]:
+                        if reached < cost[effect]:
+                            cost[effect] = reached
+                            target.append(effect)
+        layer = following
+        depth += 1
+    return math.inf
+
+
+def max_exploration(
+    relaxed: RelaxedTask,
+    state: int,
+    op_cost: list[int],
+    supporter: list[int],
+    supporter_cost: list[int],
+) -> list[float]:
+    """hmax of every fact under ``op_cost`` (any non-negative integers), by a Dijkstra over
+    facts with a bucket queue as in :func:`~strips_evaluators.heuristics.additive.additive_exploration`.
+    The last precondition of an operator to leave the queue is its costliest: it
+    becomes the operator's ``supporter``, with its cost in ``supporter_cost`` (LM-cut
+    needs both; operators never reached keep their entries)."""
+    add, pre_of = relaxed.add, relaxed.pre_of
+    start, cost = start_exploration(relaxed, state)
+    remaining = relaxed.pre_count[:]
+    buckets = {0: start}
+    levels = [0]
+    while levels:
+        level = heappop(levels)
+        for fact in buckets.pop(level):
+            if cost[fact] != level:
+                continue
+            for op in pre_of[fact]:
+                left = remaining[op] - 1
+                remaining[op] = left
+                if not left:
+                    supporter[op] = fact
+                    supporter_cost[op] = level
+                    reached = level + op_cost[op]
+                    for effect in add[op]:
+                        if reached < cost[effect]:
+                            cost[effect] = reached
+                            bucket = buckets.setdefault(reached, [])
+                            if not bucket:
+                                heappush(levels, reached)
+                            bucket.append(effect)
+    return cost
+
+
+def relaxed_plan(relaxed: RelaxedTask, state: int) -> tuple[float, set[int]]:
+    """hFF and the relaxed operators of the relaxed plan from hadd best supporters (empty
+    at relaxed dead ends); an operator used for several effects counts once."""
+    cost, supporter = additive_exploration(relaxed, state)
+    goal = relaxed.goal
+    for fact in goal:
+        if cost[fact] == float("inf"):
+            return float("inf"), set()
+    pre, op_cost = relaxed.pre, relaxed.cost
+    plan: set[int] = set()
+    total = 0
+    subgoals = list(goal)
+    while subgoals:
+        op = supporter[subgoals.pop()]
+        if op < 0 or op in plan:
+            continue
+        plan.add(op)
+        total += op_cost[op]
+        subgoals.extend(pre[op])
+    if relaxed.shared_costs:
+        operator = relaxed.operator
+        total = sum(op_cost[first] for first in {operator[op]: op for op in plan}.values())
+    return total, plan

@@ -1,0 +1,7 @@
+(define (problem elevator-1) (:domain elevator)
+  (:objects a b c v - passenger f0 f1 f2 f3 - floor)
+  (:init (lift-at f0)
+         (above f0 f1) (above f0 f2) (above f0 f3) (above f1 f2) (above f1 f3) (above f2 f3)
+         (origin a f0) (destin a f2) (origin b f3) (destin b f1)
+         (origin c f1) (destin c f3) (origin v f2) (destin v f0) (vip v))
+  (:goal (forall (?p - passenger) (served ?p))))

@@ -1,0 +1,95 @@
+"""The entry-point cache: a run with unchanged installs never imports importlib.metadata,
+and installing a distribution is seen by the next run."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+from strips_framework import entry_points
+
+SCRIPT = """
+import sys
+from strips_framework.plugins import Registry, get_plugin_manager
+registry = Registry(get_plugin_manager(load_entrypoints=True))
+print(",".join(registry.names("heuristic")))
+print(registry.get("evaluator", "paper").distribution)
+print("importlib.metadata" in sys.modules)
+"""
+
+
+def run(tmp_path: Path, extra_path: Path | None = None) -> list[str]:
+    env = {**os.environ, entry_points.CACHE_ENV: str(tmp_path / "cache")}
+    env.pop("STRIPS_DISABLE_PLUGIN_AUTOLOAD", None)
+    if extra_path is not None:
+        env["PYTHONPATH"] = os.pathsep.join([str(extra_path), env.get("PYTHONPATH", "")])
+    done = subprocess.run(
+        [sys.executable, "-c", SCRIPT], env=env, capture_output=True, text=True, check=True
+    )
+    return done.stdout.split()
+
+
+def fake_distribution(folder: Path) -> None:
+    """A distribution 'fake-heuristics' with one entry point whose plugin registers a
+    heuristic named 'fake'."""
+    folder.mkdir()
+    (folder / "fake_heuristics.py").write_text(
+        textwrap.dedent(
+            """
+            from strips_framework.hookspecs import hookimpl
+
+            class Fake:
+                name = "fake"
+
+            @hookimpl
+            def strips_register_heuristics():
+                return [Fake]
+            """
+        )
+    )
+    info = folder / "fake_heuristics-0.1.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: fake-heuristics\nVersion: 0.1\n")
+    (info / "entry_points.txt").write_text("[strips_framework]\nfake = fake_heuristics\n")
+
+
+def test_a_second_run_reads_the_cache_instead_of_the_metadata(tmp_path):
+    first = run(tmp_path)
+    assert first[-1] == "True" and first[1] == "strips-evaluators"
+    second = run(tmp_path)
+    assert second == [*first[:-1], "False"]
+    assert len(list((tmp_path / "cache" / "strips-framework").iterdir())) == 1
+
+
+def test_a_newly_installed_distribution_is_found(tmp_path):
+    before = run(tmp_path)
+    assert "fake" not in before[0].split(",")
+    fake_distribution(tmp_path / "site")
+    after = run(tmp_path, tmp_path / "site")
+    assert "fake" in after[0].split(",") and after[-1] == "True"
+    again = run(tmp_path, tmp_path / "site")
+    assert again[0] == after[0] and again[-1] == "False"
+    assert len(list((tmp_path / "cache" / "strips-framework").iterdir())) == 1
+
+
+def test_an_edited_entry_points_file_is_read_again(tmp_path):
+    fake_distribution(tmp_path / "site")
+    assert "fake" in run(tmp_path, tmp_path / "site")[0].split(",")
+    declared = tmp_path / "site" / "fake_heuristics-0.1.dist-info" / "entry_points.txt"
+    declared.write_text("[other_group]\nfake = fake_heuristics\n")
+    assert "fake" not in run(tmp_path, tmp_path / "site")[0].split(",")
+
+
+def test_each_installation_has_its_own_cache_file(tmp_path, monkeypatch):
+    monkeypatch.setenv(entry_points.CACHE_ENV, str(tmp_path))
+    here = entry_points._cache_file("strips_framework")
+    monkeypatch.setattr(sys, "prefix", str(tmp_path / "another-venv"))
+    assert entry_points._cache_file("strips_framework") not in (here, None)
+
+
+def test_entry_point_values_name_modules_or_attributes():
+    assert entry_points.load("os.path") is os.path
+    assert entry_points.load("os.path:join") is os.path.join
