@@ -189,6 +189,22 @@ def from_clause(clause: Clause, *, sos: bool) -> PClause | None:
     return None if template is None else template.fresh_copy(sos=sos)
 
 
+def from_fact(clause: Clause) -> PClause | None:
+    """:func:`from_clause` for a positive ground unit over constants, the bulk of a world
+    model, without the general import's renumbering and cache (a session imports M0's
+    facts once); ``None`` for any other clause."""
+    if len(clause.literals) != 1 or clause.bindings:
+        return None
+    positive, atom = clause.literals[0]
+    if not positive:
+        return None
+    for arg in atom[1:]:
+        if type(arg) is not str:
+            return None
+    # term_weight: the predicate and each constant weigh 2.
+    return PClause(clause.literals, 0, (), sos=False, label=clause.label, weight=2 * len(atom))
+
+
 @lru_cache(maxsize=1 << 14)
 def _import(clause: Clause) -> PClause | None:
     bound = dict(clause.bindings)

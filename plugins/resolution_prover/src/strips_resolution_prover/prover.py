@@ -51,7 +51,14 @@ from strips_resolution_prover.inference import (
     resolvents,
 )
 from strips_resolution_prover.partners import PartnerIndex
-from strips_resolution_prover.pclause import PClause, from_clause, offset, renumber, term_depth
+from strips_resolution_prover.pclause import (
+    PClause,
+    from_clause,
+    from_fact,
+    offset,
+    renumber,
+    term_depth,
+)
 from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
 
@@ -171,7 +178,7 @@ class _Axioms(_Retained):
         if not options.set_of_support:
             return  # every attempt resolves its axioms afresh (module docstring)
         for origin, axiom in enumerate(initial.clauses):
-            imported = from_clause(axiom, sos=False)
+            imported = from_fact(axiom) or from_clause(axiom, sos=False)
             if imported is not None:
                 self._add(imported, origin, options, unique_names)
 
@@ -188,6 +195,8 @@ class _Axioms(_Retained):
             self.refutations.append(simplified)
             return
         self.retain(simplified, selecting=False, deletable=False)
+        if len(simplified.literals) < 2:
+            return  # a unit has no factors
         for factor in factors(simplified, self.limits):
             usable = PClause(
                 factor.literals, factor.nvars, factor.bindings, sos=False, parents=factor.parents
