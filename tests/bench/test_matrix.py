@@ -132,4 +132,7 @@ def test_anchors_not_installed_or_on_native_problems_are_skipped_with_a_note(
     (fake_home / "bin").mkdir(parents=True)
     (fake_home / "bin" / "pyperplan").write_text("")
     monkeypatch.setenv("STRIPS_ANCHORS", str(fake_home))
-    assert matrix.notes() == ["configuration 'pp' runs PDDL problems only: 2 problem(s) skipped"]
+    assert matrix.notes() == [
+        "configuration 'pp' runs PDDL problems only (a ground-task strategy, or an anchor "
+        "planner): 2 problem(s) skipped"
+    ]
