@@ -5,9 +5,14 @@ from __future__ import annotations
 
 import io
 import re
+import time
 from pathlib import Path
 
+import attrs
+
 from strips_framework.cli import main
+from strips_framework.planner import Planner
+from strips_framework.progress import Progress
 
 ROOT = Path(__file__).resolve().parents[1]
 FIVE_GOALS = ROOT / "examples" / "robot-world" / "five-goals.strips"
@@ -35,10 +40,29 @@ def test_world_model_search_shows_nodes_scored(monkeypatch):
     assert counts == sorted(counts) and counts[-1] > 0
 
 
-def test_forward_search_shows_states_evaluated(monkeypatch):
-    config = ROOT / "examples" / "configs" / "optimal-pddl.toml"
-    shown = LINE.findall(_solve_on_a_terminal(monkeypatch, str(BLOCKS), "--config", str(config)))
-    assert shown and all(kind == "states evaluated" for _, kind, _ in shown)
+def test_forward_search_counts_states_evaluated_and_the_best_estimate():
+    progress = Progress(io.StringIO())
+    planner = attrs.evolve(Planner.create({"strategy": "astar", "heuristic": "lmcut"}),
+                           progress=progress)
+    result = planner.run(BLOCKS)
+    assert result.solved and progress.what == "states evaluated"
+    assert progress.scored >= result.statistics.evaluated > 0
+    assert progress.best == 0  # A* evaluates the goal state it reaches
+    assert LINE.match("\r" + progress.line())
+
+
+def test_the_line_is_shown_every_interval_while_entered():
+    stream = io.StringIO()
+    progress = Progress(stream, interval=0.001)
+    with progress:
+        progress.note(7.0)
+        progress.note(3.0)
+        deadline = time.monotonic() + 10
+        while not stream.getvalue() and time.monotonic() < deadline:
+            time.sleep(0.01)
+    shown = LINE.findall(stream.getvalue())
+    assert shown and shown[-1][0] == "2" and shown[-1][2] == "3"
+    assert stream.getvalue().endswith("\n")  # the line is ended when the search is
 
 
 def test_no_progress_when_stderr_is_not_a_terminal(capsys):

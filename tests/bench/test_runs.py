@@ -5,9 +5,10 @@ from __future__ import annotations
 import signal
 import subprocess
 import time
+import tomllib
 from collections import Counter
 
-from strips_framework.bench.configs import strips_command
+from strips_framework.bench.configs import PlannerConfig, RunFiles, strips_command
 from strips_framework.cli import main
 
 from .conftest import PUSH_ONE_BOX, ROOT, THREE_BOXES, fake, read_rows
@@ -154,18 +155,30 @@ one = ["{PUSH_ONE_BOX}"]
     assert Counter(row["config"] for row in read_rows(out)) == {"quick": 1, "slow": 1}
 
 
-def test_the_planner_stops_itself_within_the_matrixs_time_limit(write_matrix, tmp_path):
-    """The matrix's time limit reaches the planner (a little less, for start-up), so a
-    long search ends by its own limit, with its statistics, not by SIGKILL."""
+def test_the_matrixs_time_limit_reaches_the_planner(tmp_path):
+    """The planner gets the matrix's time limit (a fifth less, at most 5 s less, for
+    start-up), so a long search ends by its own limit, with its statistics, instead of
+    being killed without them; a config's own shorter limit stays."""
+    files = RunFiles(THREE_BOXES, None, tmp_path)
+    for own, matrix, expected in ((None, 10, 8.0), (None, 120, 115.0), (3, 120, 3)):
+        data = {"evaluator": "paper"} | ({"limits": {"time": own}} if own else {})
+        command = PlannerConfig("p", data).command(files, matrix)
+        written = tomllib.loads((tmp_path / "strips.toml").read_text())
+        assert written["limits"]["time"] == expected
+        assert command[command.index("--config") + 1] == str(tmp_path / "strips.toml")
+
+
+def test_a_planner_stopped_by_its_own_limit_is_a_timeout_with_statistics(write_matrix, tmp_path):
     five_goals = ROOT / "examples" / "robot-world" / "five-goals.strips"
     matrix = write_matrix(f"""
 [limits]
-time = 8
+time = 60
 memory = 1024
 [problems]
 hard = ["{five_goals}"]
 [configs.bfs]
 evaluator = "breadth-first"
+limits = {{time = 1}}
 """)
     out = tmp_path / "results.jsonl"
     assert main(["bench", str(matrix), "-o", str(out), "--no-progress"]) == 0

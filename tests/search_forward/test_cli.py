@@ -140,3 +140,12 @@ def test_a_configured_world_model_strategy_runs_on_pddl(tmp_path, capsys):
     assert main(["solve", str(BLOCKS / "p4.pddl"), "--config", str(means_ends), "--json"]) == 0
     payload = json.loads(capsys.readouterr().out)
     assert payload["config"]["strategy"] == "means-ends" and payload["status"] == "solved"
+
+
+def test_tree_on_forward_search_is_a_clear_warning_not_a_silent_no_op(tmp_path, capsys):
+    tree = tmp_path / "tree.dot"
+    with pytest.warns(UserWarning, match="--tree: the forward search keeps no tree to draw"):
+        code = main(["solve", str(BLOCKS / "p4.pddl"), "--config", str(FAST),
+                     "--tree", str(tree)])
+    assert code == exit_codes.SOLVED and not tree.exists()
+    assert "; status: solved" in capsys.readouterr().out

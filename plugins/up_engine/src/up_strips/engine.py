@@ -35,6 +35,7 @@ from strips_framework.errors import StripsError
 from strips_framework.pddl import parse_task
 from strips_framework.planner import GROUND_STRATEGY, Planner
 from strips_framework.result import Result, Status
+from strips_framework.search.limits import Clock
 
 Status_ = PlanGenerationResultStatus
 
@@ -150,12 +151,13 @@ class StripsEngine(Engine, OneshotPlannerMixin):
         if heuristic is not None:
             warnings.warn("strips: a custom heuristic is not supported; ignored", stacklevel=2)
         planner = self._planner(timeout)
+        clock = Clock(planner.config.limits.time)  # the timeout covers writing and reading
         writer = PDDLWriter(problem)
         try:
             task = parse_task(
                 writer.get_domain(), writer.get_problem(), "<UP domain>", "<UP problem>"
             )
-            result = planner.solve_pddl(task)
+            result = planner.solve_pddl(task, clock, parse_seconds=clock.elapsed())
         except StripsError as error:
             return PlanGenerationResult(
                 Status_.UNSUPPORTED_PROBLEM, None, self.name, log_messages=[_log(error)]
