@@ -4,8 +4,9 @@ process, and the table issue 12 asks for.
     .venv/bin/python benchmarks/fuzz_inputs.py                  # 1,250 per format: 10,000
     .venv/bin/python benchmarks/fuzz_inputs.py --per-format 200 --formats native,tptp
 
-Inputs are mutants of the shipped examples (and, when ``shared/bench/tptp`` is beside
-the repository, of a few of its problems), seeded by their number: a run is
+Inputs are mutants of the shipped examples, of the PDDL test tasks (costs, derived
+predicates, ADL conditions) and, when ``shared/bench/tptp`` is beside the repository, of
+a few of its problems, seeded by their number: a run is
 reproducible, and ``--show LABEL`` prints one input's command and output again. Prints,
 per format: inputs, clean errors (exit 2, one ``error:`` line), errors naming the file
 and file:line, inputs accepted (a plan, a verdict, a limit), tracebacks and hangs
@@ -26,6 +27,10 @@ from shared_bench import shared_bench
 from strips_framework.testing import fuzz
 
 ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "tests" / "pddl" / "data"
+#: PDDL tasks with costs, derived predicates and ADL conditions, beside the example's.
+TASKS = [(DATA / f"{name}-domain.pddl", DATA / f"{name}-{n}.pddl")
+         for name, n in (("rooms", 1), ("lamps", 1), ("crates", 3))]
 SHARED_TPTP = ("dev/PUZ001-1.p", "dev/PUZ047+1.p", "dev/SET146+3.p", "dev/MSC002-1.p")
 
 
@@ -39,7 +44,7 @@ def main() -> int:
     tptp = shared_bench("tptp")
     extra = [tptp / name for name in SHARED_TPTP if tptp and (tptp / name).is_file()]
     with tempfile.TemporaryDirectory() as folder:
-        space = fuzz.Workspace.create(Path(folder), ROOT / "examples", extra)
+        space = fuzz.Workspace.create(Path(folder), ROOT / "examples", extra, TASKS)
         if args.show:
             fmt, number = args.show.rsplit("-", 1)
             case = next(c for c in fuzz.cases(space, int(number) + 1, [fmt]) if c.label == args.show)

@@ -12,12 +12,18 @@ import pytest
 from strips_framework.testing import fuzz
 
 ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT / "tests" / "pddl" / "data"
 PER_FORMAT = 150
+
+
+#: PDDL tasks with costs, derived predicates and ADL conditions, beside the example's.
+TASKS = [(DATA / f"{name}-domain.pddl", DATA / f"{name}-{n}.pddl")
+         for name, n in (("rooms", 1), ("lamps", 1), ("crates", 3))]
 
 
 @pytest.fixture(scope="module")
 def space(tmp_path_factory: pytest.TempPathFactory) -> fuzz.Workspace:
-    return fuzz.Workspace.create(tmp_path_factory.mktemp("fuzz"), ROOT / "examples")
+    return fuzz.Workspace.create(tmp_path_factory.mktemp("fuzz"), ROOT / "examples", pddl=TASKS)
 
 
 def _shown(outcome: fuzz.Outcome) -> str:

@@ -152,3 +152,9 @@ def test_anchors_not_installed_or_on_native_problems_are_skipped_with_a_note(
         "configuration 'pp' runs PDDL problems only (a ground-task strategy, or an anchor "
         "planner): 2 problem(s) skipped"
     ]
+
+
+
+def test_a_problem_pattern_that_is_not_a_string_is_an_error(write_matrix):
+    with pytest.raises(ConfigError, match=r"'problems.a\[1\]': expected a glob pattern \(a string\), got \['x'\]"):
+        Matrix.from_file(write_matrix("[problems]\na = ['*.strips', ['x']]\n[configs.c]\n"))

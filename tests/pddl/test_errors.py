@@ -265,3 +265,12 @@ def test_lists_nested_deeper_than_the_limit_are_refused_at_the_deep_parenthesis(
     problem = f"(define (problem p) (:domain d) (:objects a)\n (:init) (:goal {goal}))"
     with pytest.raises(InputError, match=r"problem.pddl:2:\d+: lists nested deeper than 100 levels"):
         write_task(domain_with("(:action a :parameters (?x) :effect (p ?x))"), problem)
+
+
+@pytest.mark.parametrize("amount", ["inf", "nan", "1e400", "9" * 5000, "-1", "2.5"])
+def test_a_cost_that_is_no_natural_number_is_an_error(write_task, amount):
+    action = f"(:action a :parameters (?x) :effect (and (p ?x) (increase (total-cost) {amount})))"
+    domain = domain_with(action).replace("(q ?x ?y))", "(q ?x ?y))\n  (:functions (total-cost) - number)")
+    with pytest.raises(InputError, match="expected a number|not supported: action cost") as error:
+        write_task(domain, PROBLEM)
+    assert error.value.line is not None

@@ -105,6 +105,8 @@ class Matrix:
         for set_name, patterns in problem_sets.items():
             patterns = [patterns] if isinstance(patterns, str) else patterns
             reader.expect(patterns, list, f"problems.{set_name}", "an array of glob patterns")
+            for index, pattern in enumerate(patterns):
+                reader.expect(pattern, str, f"problems.{set_name}[{index}]", "a glob pattern (a string)")
             problems += expand_problem_set(set_name, patterns, base, f"{source}: 'problems.{set_name}'")
         configs = reader.product(reader.table(data, "product"))
         for name, table in reader.table(data, "configs").items():

@@ -11,6 +11,7 @@ names the file, the line and column, and what was expected there.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from strips_framework.pddl.formulas import (
@@ -209,11 +210,20 @@ def header(reader: Reader, top: Node, kind: str) -> str:
     return reader.name(head[1], head, f"the {kind} name")
 
 
+#: A number in PDDL: digits, with an optional fraction.
+_NUMBER = re.compile(r"-?[0-9]+(?:\.[0-9]+)?")
+#: The most digits a cost may have (beyond, it is no cost a search can add up).
+_COST_DIGITS = 18
+
+
 def integer(reader: Reader, text: str, node: Node) -> int:
-    try:
-        value = float(text)
-    except ValueError:
-        raise reader.error(node, f"expected a number, found {text!r}") from None
-    if value != int(value) or value < 0:
-        raise reader.error(node, f"not supported: action cost {text} (costs are natural numbers)")
-    return int(value)
+    """A natural number (``5``, ``5.0``); ``inf``, ``nan`` and ``1e400`` are not numbers
+    in PDDL, and a cost of more than 18 digits is refused rather than overflowed."""
+    if not _NUMBER.fullmatch(text):
+        raise reader.error(node, f"expected a number, found {text!r}")
+    whole, _, fraction = text.partition(".")
+    if whole.startswith("-") or fraction.strip("0") or len(whole) > _COST_DIGITS:
+        raise reader.error(
+            node, f"not supported: action cost {text} (costs are natural numbers below 10^18)"
+        )
+    return int(whole)

@@ -45,7 +45,8 @@ FORMATS = (
 )
 
 #: Exit codes a run may end with (see :mod:`strips_framework.exit_codes`); argparse's
-#: ``--help`` exits 0 and its usage errors 2.
+#: ``--help`` exits 0 and its usage errors 2. Not 32: a plugin of this repository raising
+#: on some input is a bug the fuzzer is there to find.
 KNOWN_EXIT_CODES = frozenset({0, 1, 2, 11, 12, 22, 23, 130})
 INPUT_ERROR = 2
 
@@ -300,9 +301,18 @@ class Workspace:
     root: Path
     examples: Path
     tptp: list[Path]
+    tasks: list[tuple[Path, Path]]  # PDDL (domain, problem) pairs
 
     @classmethod
-    def create(cls, root: Path, examples: Path, tptp: Sequence[Path] = ()) -> Workspace:
+    def create(
+        cls,
+        root: Path,
+        examples: Path,
+        tptp: Sequence[Path] = (),
+        pddl: Sequence[tuple[Path, Path]] = (),
+    ) -> Workspace:
+        """Copy ``examples`` (and the given TPTP problems and PDDL tasks, beside the
+        example ones) into ``root``."""
         target = root / "examples"
         shutil.copytree(examples, target, ignore=shutil.ignore_patterns("plugins", "*.jsonl"))
         (root / "limits.toml").write_text(FUZZ_LIMITS)
@@ -312,7 +322,15 @@ class Workspace:
             (tptp_dir / name).write_text(text)
         for path in tptp:
             shutil.copy(path, tptp_dir / path.name)
-        space = cls(root, target, sorted(tptp_dir.glob("*.p")))
+        blocks = target / "pddl" / "blocksworld"
+        tasks = [(blocks / "domain.pddl", blocks / "p4.pddl")]
+        for number, (domain, problem) in enumerate(pddl):
+            folder = root / "pddl" / f"task{number}"
+            folder.mkdir(parents=True)
+            tasks.append((folder / "domain.pddl", folder / problem.name))
+            shutil.copy(domain, tasks[-1][0])
+            shutil.copy(problem, tasks[-1][1])
+        space = cls(root, target, sorted(tptp_dir.glob("*.p")), tasks)
         space._flatten_includes()
         space._write_plans()
         return space
@@ -330,9 +348,9 @@ class Workspace:
         """Solve the native tasks and the PDDL example once for plans to mutate."""
         for problem in self.native_problems():
             run_cli(["solve", str(problem), "--plan-file", str(problem.with_suffix(".plan"))], 60)
-        domain, problem = self.pddl()
-        run_cli(["solve", str(domain), str(problem), "--plan-file",
-                 str(problem.with_suffix(".plan"))], 60)
+        for domain, problem in self.tasks:
+            run_cli(["solve", str(domain), str(problem), "--plan-file",
+                     str(problem.with_suffix(".plan"))], 60)
 
     def native_problems(self) -> list[Path]:
         return self.seeds("*.strips")
@@ -340,12 +358,9 @@ class Workspace:
     def seeds(self, pattern: str, folder: str = "") -> list[Path]:
         """The files to mutate: the copies of the examples (and the plans solved from
         them), never an earlier input's mutant (``fuzz*``)."""
-        found = (self.examples / folder).rglob(pattern)
+        found = [*(self.examples / folder).rglob(pattern), *(self.root / "pddl").rglob(pattern)]
         return sorted(path for path in found if not path.name.startswith("fuzz"))
 
-    def pddl(self) -> tuple[Path, Path]:
-        folder = self.examples / "pddl" / "blocksworld"
-        return folder / "domain.pddl", folder / "p4.pddl"
 
     def relative(self, path: Path) -> str:
         return os.path.relpath(path, self.root)
@@ -361,7 +376,7 @@ class Case:
     data: bytes = b""
 
 
-def _mutant(space: Workspace, rng: random.Random, seed: Path, stem: str) -> tuple[Path, bytes]:
+def _mutant(rng: random.Random, seed: Path, stem: str) -> tuple[Path, bytes]:
     target = seed.with_name(f"{stem}{seed.suffix}")
     return target, mutate(rng, seed.read_bytes())
 
@@ -371,38 +386,37 @@ def _case(space: Workspace, fmt: str, number: int) -> Case:
     label = f"{fmt}-{number}"
     rel = space.relative
     limits = "limits.toml"
-    domain, problem = space.pddl()
+    domain, problem = rng.choice(space.tasks)
     if fmt == "pddl-domain":
-        target, data = _mutant(space, rng, domain, "fuzz-domain")
+        target, data = _mutant(rng, domain, "fuzz-domain")
         return Case(label, ("solve", rel(target), rel(problem), "--config", limits), target, data)
     if fmt == "pddl-problem":
-        target, data = _mutant(space, rng, problem, "fuzz-problem")
+        target, data = _mutant(rng, problem, "fuzz-problem")
         return Case(label, ("solve", rel(domain), rel(target), "--config", limits), target, data)
     if fmt == "native":
         seed = rng.choice(space.native_problems())
-        target, data = _mutant(space, rng, seed, "fuzz")
+        target, data = _mutant(rng, seed, "fuzz")
         return Case(label, ("solve", rel(target), "--config", limits), target, data)
     if fmt == "config":
         seed = rng.choice(space.seeds("*.toml", "configs"))
-        target, data = _mutant(space, rng, seed, "fuzz")
+        target, data = _mutant(rng, seed, "fuzz")
         pddl = b"pddl" in seed.read_bytes() or seed.stem == "fast"
         task = (rel(domain), rel(problem)) if pddl else (rel(space.examples / "three-boxes.strips"),)
         return Case(label, ("solve", *task, "--config", rel(target)), target, data)
     if fmt == "matrix":
         seed = rng.choice(space.seeds("*.toml", "bench"))
-        target, data = _mutant(space, rng, seed, "fuzz")
+        target, data = _mutant(rng, seed, "fuzz")
         argv = ("bench", rel(target), "--max-runs", "0", "--no-progress", "-o", "fuzz.jsonl")
         return Case(label, argv, target, data)
     if fmt == "tptp":
         seed = rng.choice(space.tptp)
-        target, data = _mutant(space, rng, seed, "fuzz")
+        target, data = _mutant(rng, seed, "fuzz")
         return Case(label, ("prove", rel(target), "--effort", "100"), target, data)
     if fmt == "plan":
         seed = rng.choice(space.seeds("*.plan"))
-        target, data = _mutant(space, rng, seed, "fuzz")
-        task = (rel(domain), rel(problem)) if seed.stem == problem.stem else (
-            rel(seed.with_suffix(".strips")),
-        )
+        target, data = _mutant(rng, seed, "fuzz")
+        pair = next(((d, p) for d, p in space.tasks if p.with_suffix(".plan") == seed), None)
+        task = (rel(pair[0]), rel(pair[1])) if pair else (rel(seed.with_suffix(".strips")),)
         return Case(label, ("validate", *task, rel(target)), target, data)
     if fmt == "command-line":
         return Case(label, tuple(_command_line(space, rng)))
@@ -412,7 +426,7 @@ def _case(space: Workspace, fmt: str, number: int) -> Case:
 def _command_line(space: Workspace, rng: random.Random) -> list[str]:
     """A command line from the words of real ones, some of them wrong."""
     rel = space.relative
-    domain, problem = space.pddl()
+    domain, problem = space.tasks[0]
     files = [rel(p) for p in (domain, problem, space.examples / "three-boxes.strips",
                               space.examples / "configs" / "fast.toml", space.tptp[0],
                               space.examples / "bench" / "paper.toml")]
