@@ -17,7 +17,6 @@ from attrs.validators import ge, instance_of, optional
 
 from strips_framework.capabilities import (
     ANSWERS,
-    COMPLETE,
     EFFORT_BOUND,
     EQUALITY,
     QUANTIFIED_AXIOMS,
@@ -26,6 +25,7 @@ from strips_framework.capabilities import (
 )
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
+from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
@@ -63,7 +63,7 @@ class ResolutionProver:
     #: With the default options; size limits (``max_clause_literals`` and the like) give
     #: up on what they discard, which keeps the prover sound but not complete.
     capabilities: ClassVar[frozenset[str]] = frozenset(
-        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, COMPLETE, EFFORT_BOUND}
+        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
     )
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
@@ -270,9 +270,19 @@ class _Saturation:
                 PROVED, answers=tuple(self.answers), effort_used=effort, proof=self._proof()
             )
         saturated = not len(self.queue) and not self.limits.discarded
-        status = SATURATED if saturated else GAVE_UP
+        status = SATURATED if saturated and self._complete() else GAVE_UP
         uncompleted = tuple(c.to_clause() for c in self.clauses if c.sos and not c.dead)
         return ProofResult(status, uncompleted=uncompleted, effort_used=effort)
+
+    def _complete(self) -> bool:
+        """Whether saturation here shows satisfiability (see :mod:`.completeness`)."""
+        reason = incompleteness(
+            self.task.axioms,
+            set_of_support=self.options.set_of_support,
+            uses_equality=self.uses_equality,
+            complete_equality=False,
+        )
+        return reason is None
 
     def _proof(self) -> tuple[Clause, ...]:
         """The refutation's clauses, premises before conclusions (by derivation order)."""
