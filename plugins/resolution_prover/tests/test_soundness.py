@@ -145,5 +145,20 @@ def test_unique_names_refute_distinct_constants() -> None:
     prover = ResolutionProver()
     problem = parse_tptp("fof(a, axiom, p(a)). fof(c, conjecture, ?[X]: (p(X) & X != b)).")
     assert prover.prove(problem.task(100, unique_names=True)).status == PROVED
-    assert prover.prove(problem.task(100)).status != PROVED
-    assert prover.prove(problem.task(100)).status != SATURATED
+    assert prover.prove(problem.task(100)).status == GAVE_UP
+
+
+@configs
+def test_unique_names_instantiate_equations(options: dict) -> None:
+    # exists x: x != a follows once another name is known (x := b); with a only, it does
+    # not (a one-element world), and without unique names it does not either.
+    prover = ResolutionProver(**options)
+    problem = parse_tptp("fof(a, axiom, p(b)). fof(c, conjecture, ?[X]: X != a).")
+    assert prover.prove(problem.task(100, unique_names=True)).proved
+    assert not prover.prove(problem.task(100)).proved
+    alone = parse_tptp("fof(c, conjecture, ?[X]: X != a).")
+    assert not prover.prove(alone.task(100, unique_names=True)).proved
+    # ... and as an axiom under a set of support: everything is a, yet b is not a.
+    contradiction = parse_tptp("fof(a, axiom, ![X]: X = a). fof(b, axiom, p(b)). "
+                               "fof(c, conjecture, q).")  # fmt: skip
+    assert prover.prove(contradiction.task(100, unique_names=True)).proved

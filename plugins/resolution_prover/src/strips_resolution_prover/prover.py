@@ -30,7 +30,9 @@ from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
     is_equality,
+    names_of,
     paramodulants,
+    unique_name_instances,
 )
 from strips_resolution_prover.inference import (
     RENAME_OFFSET,
@@ -109,6 +111,11 @@ class _Saturation:
             for clause in (*task.axioms, *task.negated_goal)
             for _, atom in clause.literals
         )
+        self.names = (
+            names_of(lit for c in (*task.axioms, *task.negated_goal) for lit in c.literals)
+            if self.uses_equality and task.unique_names
+            else ()
+        )
 
     # -- the loop -----------------------------------------------------------------------
 
@@ -159,6 +166,8 @@ class _Saturation:
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
         for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
+        for clause in unique_name_instances(given, self.names, self.limits):
+            self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
         partners = self.processed if has_equation else self.equational
         for clause in paramodulants(given, renamed, list(partners), self.limits):
@@ -192,15 +201,20 @@ class _Saturation:
             self._record_refutation(simplified)
             return
         self._retain(simplified)
-        # Factors of usable clauses are usable too: resolution is between factors.
-        for factor in factors(simplified, self.limits):
+        # Factors of usable clauses are usable too: resolution is between factors; and so
+        # are their instances made false equations by unique names.
+        derived = (
+            *factors(simplified, self.limits),
+            *unique_name_instances(simplified, self.names, self.limits),
+        )
+        for clause in derived:
             self._add_axiom(
                 PClause(
-                    factor.literals,
-                    factor.nvars,
-                    factor.bindings,
+                    clause.literals,
+                    clause.nvars,
+                    clause.bindings,
                     sos=False,
-                    parents=factor.parents,
+                    parents=clause.parents,
                 )
             )
 
