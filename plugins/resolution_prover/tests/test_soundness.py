@@ -125,6 +125,7 @@ def test_set_of_support_with_inconsistent_axioms_claims_nothing() -> None:
     text = "cnf(a, axiom, p | q). cnf(b, axiom, ~p). cnf(c, axiom, ~q). fof(g, conjecture, r)."
     assert status(text) == GAVE_UP
     assert status(text, set_of_support=False) == "Theorem"
+    assert status(text, schedule=True) == "Theorem"  # the automatic mode saturates next
     # Axioms that all have a positive literal are satisfiable: saturation is shown.
     assert status("cnf(a, axiom, p | ~q). cnf(b, axiom, q). fof(g, conjecture, r).") == (
         "CounterSatisfiable"

@@ -25,6 +25,7 @@ from strips_framework.capabilities import (
 )
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
+from strips_resolution_prover.auto import prove_scheduled
 from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.equality import (
     equality_resolvents,
@@ -58,7 +59,9 @@ class ResolutionProver:
     which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
-    was then incomplete.
+    was then incomplete. ``schedule`` (the automatic mode, :mod:`.auto`) runs a set of
+    support on a third of the effort, then full saturation on the rest; it overrides
+    ``set_of_support``.
     """
 
     name: ClassVar[str] = "resolution"
@@ -76,9 +79,12 @@ class ResolutionProver:
         default=None, validator=optional([instance_of(int), ge(1)])
     )
     max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
+    schedule: bool = field(default=False, validator=instance_of(bool))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
+        if self.schedule:
+            return prove_scheduled(self, task)
         return _Saturation(self, task).run()
 
 
