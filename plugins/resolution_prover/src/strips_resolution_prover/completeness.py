@@ -12,8 +12,9 @@ The reasons, each a way such a claim has been or could be wrong:
   refutation may have needed one of them;
 - **equality** with the classic calculus: paramodulation that skips variables and is only
   weight-ordered, without equality factoring, and under a set of support, is not complete
-  (a FOF puzzle with ``<=>`` and ``=`` was reported CounterSatisfiable that way);
-  :mod:`strips_resolution_prover.superposition` is the complete calculus for it;
+  (a FOF puzzle with ``<=>`` and ``=`` was reported CounterSatisfiable that way); a
+  superposition calculus (ordered, with equality factoring) would be, and is not built
+  yet, so equality problems are decided only by a refutation;
 - **a set of support with axioms not known to be satisfiable**: the set-of-support
   strategy is complete only when the clauses outside it are satisfiable (Wos et al.,
   1965). We know that cheaply when every axiom has a positive literal (true in the
@@ -39,16 +40,14 @@ def incompleteness(
     *,
     set_of_support: bool,
     uses_equality: bool,
-    complete_equality: bool,
 ) -> str | None:
     """Why saturation of this task would not show satisfiability, or ``None`` if it would.
 
     ``set_of_support``: the axioms were kept out of the set of support (never resolved
-    with each other); ``complete_equality``: equality was reasoned with by a complete
-    calculus. Discarded clauses are the caller's to check, since they are known only
-    after the search.
+    with each other); ``uses_equality``: some clause has ``=``. Discarded clauses are
+    the caller's to check, since they are known only after the search.
     """
-    if uses_equality and not complete_equality:
+    if uses_equality:
         return "equality without a complete calculus for it"
     if set_of_support and axioms and not _trivially_satisfiable(axioms):
         return "a set of support, with axioms not known to be satisfiable"

@@ -300,7 +300,6 @@ class _Saturation:
             self.task.axioms,
             set_of_support=self.options.set_of_support,
             uses_equality=self.uses_equality,
-            complete_equality=False,
         )
         return reason is None
 
