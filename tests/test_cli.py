@@ -90,6 +90,17 @@ def test_prove_reports_an_szs_status(tmp_path, capsys, status):
     assert f"SZS status {status}" in capsys.readouterr().out
 
 
+@pytest.mark.parametrize("prover", ["resolution", "z3"])
+def test_prove_with_a_prover_named_on_the_command_line(tmp_path, capsys, prover):
+    # Satisfiable, which only a prover that reasons (not one that gives up) reports.
+    problem = tmp_path / "tiny.p"
+    problem.write_text("cnf(a, axiom, p(a)).\ncnf(b, negated_conjecture, ~p(b)).\n")
+    assert main(["prove", str(problem), "--prover", prover]) == 0
+    assert "SZS status Satisfiable" in capsys.readouterr().out
+    assert main(["prove", str(problem), "--prover", "no-such"]) == 2
+    assert "prover 'no-such' is not registered" in capsys.readouterr().err
+
+
 def test_validate_replays_a_plan_file_in_the_simulator(tmp_path, capsys):
     plan = tmp_path / "plan.txt"
     assert main(["solve", str(THREE_BOXES), "--plan-file", str(plan)]) == 0

@@ -14,7 +14,7 @@ import attrs
 
 from strips_framework import __version__, exit_codes, report
 from strips_framework.bench import command as bench_command
-from strips_framework.config import Config
+from strips_framework.config import Choice, Config
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
 from strips_framework.planner import Planner, is_pddl
@@ -57,6 +57,9 @@ def _parser() -> argparse.ArgumentParser:
     prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
     prove.add_argument(
         "--effort", type=_positive, help="prover effort (default: [limits] effort)"
+    )
+    prove.add_argument(
+        "--prover", help="a registered prover by name (default: the config's [prover] name)"
     )
 
     validate = commands.add_parser(
@@ -203,7 +206,12 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
 
     problem = load_tptp(args.problem)
     effort = args.effort if args.effort is not None else planner.config.limits.effort
-    result = planner.prover().prove(problem.task(effort=effort))
+    config = planner.config
+    if args.prover is not None and args.prover != config.choices["prover"].name:
+        # Another prover than the config's: with its own defaults, not the config's options.
+        choices = {**config.choices, "prover": Choice("prover", args.prover)}
+        config = attrs.evolve(config, choices=choices)
+    result = config.build(planner.registry, "prover").prove(problem.task(effort=effort))
     print(szs_report(problem, result))
     return 0
 

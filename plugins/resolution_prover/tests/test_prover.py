@@ -144,13 +144,14 @@ def test_unique_names_evaluation() -> None:
     # a != a is false, so a clause with it is kept without that literal.
     assert prove(axioms, clauses([neg("=", "r1", "r1"), neg("IN", "ROBOT", "r1")])).proved
     # Distinct names are distinct: the goal a = b is refuted at once, b = b is true.
-    assert prove([], clauses([neg("=", "a", "b")]), unique_names=True).status == SATURATED
+    # (Not "Satisfiable": that needs a calculus complete for equality.)
+    assert prove([], clauses([neg("=", "a", "b")]), unique_names=True).status == GAVE_UP
     assert prove([], clauses([pos("=", "a", "b")]), unique_names=True).proved
 
 
 def test_skolem_constants_are_not_unique_names() -> None:
     result = prove([], clauses([pos("=", "sk!1", "b")]), unique_names=True)
-    assert result.status == SATURATED
+    assert not result.proved
 
 
 def test_equality_by_paramodulation() -> None:

@@ -2,7 +2,10 @@
 
 Evaluation is the paper's "predicate evaluation" of ``=``: ``t = t`` is true, and under
 unique names two distinct constants are distinct objects, so ``a = b`` is false and
-``a != b`` true. True literals make a clause redundant, false ones are dropped.
+``a != b`` true. True literals make a clause redundant, false ones are dropped. Evaluation
+only sees ground equations; :func:`unique_name_instances` makes the others ground where
+that makes them false (``x = a`` with ``x := b``), which is resolution with the axioms
+``c != d`` that unique names stand for, so ``exists x: x != a`` follows when ``b`` is known.
 
 Paramodulation replaces a subterm ``u`` of one clause by ``r`` when a positive literal
 ``l = r`` of another unifies ``l`` with ``u``. To keep it from exploding it never
@@ -18,7 +21,7 @@ on ``~P(b)``). Problems without ``=`` never reach this module.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Term
@@ -162,3 +165,42 @@ def equality_resolvents(given: PClause, limits: Limits) -> Iterator[PClause]:
         clause = build(given.literals[:i] + given.literals[i + 1 :], subst, (given.id,), limits)
         if clause is not None:
             yield clause
+
+
+def names_of(literals: Iterable[Literal]) -> tuple[str, ...]:
+    """The constants (not Skolem constants) of ``literals``, in order of first occurrence."""
+    found: dict[str, None] = {}
+    stack: list[Term] = [arg for _, atom in literals for arg in atom[1:]]
+    while stack:
+        term = stack.pop()
+        if type(term) is tuple:
+            stack.extend(term[1:])
+        elif type(term) is str and not term.startswith(SKOLEM_PREFIX):
+            found[term] = None
+    return tuple(sorted(found))
+
+
+def unique_name_instances(
+    given: PClause, names: tuple[str, ...], limits: Limits
+) -> Iterator[PClause]:
+    """From ``s = t | C`` with ``s``, ``t`` variables, parameters or names, derive
+    ``C``·σ for each σ mapping them to two different names (the equation is then false)."""
+    for i, (positive, atom) in enumerate(given.literals):
+        if not positive or not is_equality(atom):
+            continue
+        left, right = atom[1], atom[2]
+        if type(left) is tuple or type(right) is tuple or (type(left) is str and type(right) is str):
+            continue
+        if any(type(side) is str and side.startswith(SKOLEM_PREFIX) for side in (left, right)):
+            continue
+        rest = given.literals[:i] + given.literals[i + 1 :]
+        for first in names if type(left) is not str else (left,):
+            for second in names if type(right) is not str else (right,):
+                if first == second:
+                    continue
+                subst: Substitution = dict(given.bindings)
+                if unify(left, first, subst) is None or unify(right, second, subst) is None:
+                    continue
+                clause = build(rest, subst, (given.id,), limits)
+                if clause is not None:
+                    yield clause

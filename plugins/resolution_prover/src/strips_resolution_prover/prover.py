@@ -12,7 +12,8 @@ factors and indexes M0 once (:class:`_Retained`), and each attempt adds only wha
 own: the model's ADDITIONS and the set of support, in a second layer. A model's deletions
 hide M0 clauses by id, so nothing of M0 is copied or walked per attempt (paper, III.D).
 Without a set of support the axioms are resolved with each other, which needs them all in
-the attempt's own layer: that mode has no session speed-up.
+the attempt's own layer; so do equations under unique names, whose instances depend on
+the constants of each attempt: those modes have no session speed-up.
 """
 
 from __future__ import annotations
@@ -27,7 +28,6 @@ from attrs.validators import ge, instance_of, optional
 
 from strips_framework.capabilities import (
     ANSWERS,
-    COMPLETE,
     EFFORT_BOUND,
     EQUALITY,
     QUANTIFIED_AXIOMS,
@@ -37,11 +37,15 @@ from strips_framework.capabilities import (
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
 from strips_framework.world import InitialModel, WorldModel
+from strips_resolution_prover.auto import prove_scheduled
+from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
     is_equality,
+    names_of,
     paramodulants,
+    unique_name_instances,
 )
 from strips_resolution_prover.inference import (
     RENAME_OFFSET,
@@ -73,14 +77,16 @@ class ResolutionProver:
     which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
-    was then incomplete.
+    was then incomplete. ``schedule`` (the automatic mode, :mod:`.auto`) runs a set of
+    support on a third of the effort, then full saturation on the rest; it overrides
+    ``set_of_support``.
     """
 
     name: ClassVar[str] = "resolution"
     #: With the default options; size limits (``max_clause_literals`` and the like) give
     #: up on what they discard, which keeps the prover sound but not complete.
     capabilities: ClassVar[frozenset[str]] = frozenset(
-        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, COMPLETE, EFFORT_BOUND}
+        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
     )
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
@@ -91,9 +97,12 @@ class ResolutionProver:
         default=None, validator=optional([instance_of(int), ge(1)])
     )
     max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
+    schedule: bool = field(default=False, validator=instance_of(bool))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
+        if self.schedule:
+            return prove_scheduled(self, task)
         initial = InitialModel(task.axioms)
         return ResolutionSession(self, initial, task.unique_names).prove(
             WorldModel(initial), task.negated_goal, task.effort, task.max_answers
@@ -175,8 +184,19 @@ class _Axioms(_Retained):
         self.refutations: list[PClause] = []
         self.limits = Limits(options.max_weight)
         self.uses_equality = _mentions_equality(initial.clauses)
-        if not options.set_of_support:
-            return  # every attempt resolves its axioms afresh (module docstring)
+        #: Whether each attempt takes all its axioms afresh (see the module docstring).
+        self.fresh = not options.set_of_support or (unique_names and self.uses_equality)
+        #: Saturation shows satisfiability only over axioms known to be satisfiable
+        #: (:mod:`.completeness`); M0's verdict is made once, for all its models. Every
+        #: clause has a positive literal in ``all_positive`` M0s, and additions keep that.
+        self.unknown_satisfiable = incompleteness(
+            initial.clauses, set_of_support=True, uses_equality=False
+        )
+        self.all_positive = all(any(pos for pos, _ in c.literals) for c in initial.clauses)
+        self._m0 = initial.clauses
+        self._names: tuple[str, ...] | None = None
+        if self.fresh:
+            return
         for origin, axiom in enumerate(initial.clauses):
             imported = from_fact(axiom) or from_clause(axiom, sos=False)
             if imported is not None:
@@ -204,6 +224,14 @@ class _Axioms(_Retained):
             self._add(usable, origin, options, unique_names)
 
 
+    def names(self) -> tuple[str, ...]:
+        """M0's constants, for unique names (found on first use: only an attempt whose
+        goal has an equation needs them)."""
+        if self._names is None:
+            self._names = names_of(lit for clause in self._m0 for lit in clause.literals)
+        return self._names
+
+
 class ResolutionSession:
     """The prover opened on one M0 (see the module docstring)."""
 
@@ -222,8 +250,11 @@ class ResolutionSession:
     ) -> ProofResult:
         """Refute the clauses visible in ``model`` ∪ ``negated_goal`` within ``effort``
         given clauses."""
+        if self.options.schedule:  # two calculi in turn: each attempt is a task of its own
+            task = ProofTask(model.clauses(), negated_goal, effort, max_answers, self.unique_names)
+            return prove_scheduled(self.options, task)
         hidden_m0 = model.hidden()
-        if self.options.set_of_support:
+        if not self.axioms.fresh:
             hidden = {cid for index in hidden_m0 for cid in self.axioms.by_origin.get(index, ())}
             extra: Sequence[Clause] = model.added_clauses()
         else:
@@ -278,9 +309,16 @@ class _Saturation:
         # Literal selection needs every clause to be resolved with every other: it is
         # incomplete with a set of support, whose usable clauses never meet each other.
         self.selecting = not options.set_of_support or not has_axioms
+        self.has_axioms = has_axioms
         self.uses_equality = axioms.uses_equality or _mentions_equality(
             chain(extra, negated_goal)
         )
+        # Unique names: the constants equations are instantiated with (M0's are in
+        # ``extra`` when the axioms are fresh).
+        self.names: tuple[str, ...] = ()
+        if self.uses_equality and unique_names:
+            own = names_of(lit for c in chain(extra, negated_goal) for lit in c.literals)
+            self.names = own if axioms.fresh else tuple(sorted({*axioms.names(), *own}))
 
     # -- the loop -----------------------------------------------------------------------
 
@@ -334,6 +372,8 @@ class _Saturation:
 
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
         for clause in equality_resolvents(given, self.limits):
+            self._add_new(clause)
+        for clause in unique_name_instances(given, self.names, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
         lists = (
@@ -390,15 +430,20 @@ class _Saturation:
             self._record_refutation(simplified)
             return
         self._retain(simplified)
-        # Factors of usable clauses are usable too: resolution is between factors.
-        for factor in factors(simplified, self.limits):
+        # Factors of usable clauses are usable too: resolution is between factors; and so
+        # are their instances made false equations by unique names.
+        derived = (
+            *factors(simplified, self.limits),
+            *unique_name_instances(simplified, self.names, self.limits),
+        )
+        for clause in derived:
             self._add_axiom(
                 PClause(
-                    factor.literals,
-                    factor.nvars,
-                    factor.bindings,
+                    clause.literals,
+                    clause.nvars,
+                    clause.bindings,
                     sos=False,
-                    parents=factor.parents,
+                    parents=clause.parents,
                 )
             )
 
@@ -444,9 +489,27 @@ class _Saturation:
                 PROVED, answers=tuple(self.answers), effort_used=effort, proof=self._proof()
             )
         saturated = not len(self.queue) and not self.limits.discarded
-        status = SATURATED if saturated else GAVE_UP
+        status = SATURATED if saturated and self._complete() else GAVE_UP
         uncompleted = tuple(c.to_clause() for c in self.own.clauses if c.sos and not c.dead)
         return ProofResult(status, uncompleted=uncompleted, effort_used=effort)
+
+    def _complete(self) -> bool:
+        """Whether saturation here shows satisfiability (see :mod:`.completeness`). Over a
+        session's M0 the verdict on M0 was made once; hidden clauses are not taken out
+        of it, which can only turn a Satisfiable into GaveUp."""
+        set_of_support = self.options.set_of_support
+        if self.axioms.fresh or self.uses_equality:
+            reason = incompleteness(
+                self.extra, set_of_support=set_of_support, uses_equality=self.uses_equality
+            )
+            return reason is None
+        if not set_of_support or not self.has_axioms:
+            return True
+        # The additions are positive units: an M0 whose clauses all have a positive
+        # literal stays satisfiable with them, any other only without them.
+        return self.axioms.all_positive or (
+            self.axioms.unknown_satisfiable is None and not self.extra
+        )
 
     def _proof(self) -> tuple[Clause, ...]:
         """The refutation's clauses, premises before conclusions (by derivation order)."""

@@ -1,0 +1,209 @@
+"""A :class:`ProofTask` as TPTP for E, and E's answer tuples back as parameter bindings.
+
+Symbols are renamed (``p0``, ``f1``, ...): the framework's names (``ROBOT``, ``sk!1``) are
+not all TPTP words, and a fixed numbering in order of first occurrence makes the file, and
+so E's run, the same for the same task. Unique names, when the task has ``=``, are the
+axioms ``c != d`` for every two non-Skolem constants: E's distinct objects (``"c"``) would
+only evaluate ground equations, and ``exists x: x != c`` needs ``x`` instantiated.
+
+Axioms are ``cnf(..., axiom, ...)``. A goal without parameters is its negated clauses as
+``negated_conjecture``; with parameters it is a ``question``: ``?[P1, P2]: ~(C1 & C2)``
+with each clause ``Ci`` universally closed, so E's answer tuples bind the parameters.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Iterator
+
+from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Param, Term
+from strips_framework.proving import Answer, ProofTask
+
+
+class SymbolTable:
+    """The framework's symbols and parameters, numbered for TPTP in order of first use."""
+
+    def __init__(self, unique_names: bool) -> None:
+        self.unique_names = unique_names
+        self._names: dict[tuple[str, str], str] = {}
+        self._back: dict[str, str] = {}
+        self.params: dict[Param, str] = {}
+        self.constants: dict[str, None] = {}
+        self.equality = False
+
+    def symbol(self, kind: str, name: str) -> str:
+        key = (kind, name)
+        found = self._names.get(key)
+        if found is None:
+            found = f"{kind}{len(self._names)}"
+            self._names[key] = found
+            self._back[found] = name
+        return found
+
+    def param(self, param: Param) -> str:
+        found = self.params.get(param)
+        if found is None:
+            found = self.params[param] = f"P{len(self.params)}"
+        return found
+
+    def original(self, symbol: str) -> str | None:
+        """The framework's symbol for a TPTP one, ``None`` for one E made up (Skolem)."""
+        return self._back.get(symbol)
+
+
+def _term(term: Term, table: SymbolTable) -> str:
+    kind = type(term)
+    if kind is int:
+        return f"X{term}"
+    if kind is Param:
+        return table.param(term)
+    if kind is tuple:
+        args = ",".join(_term(arg, table) for arg in term[1:])
+        return f"{table.symbol('f', term[0])}({args})"
+    symbol = table.symbol("f", term)
+    if not term.startswith(SKOLEM_PREFIX):
+        table.constants[symbol] = None
+    return symbol
+
+
+def _literal(literal: Literal, table: SymbolTable) -> str:
+    positive, atom = literal
+    if atom[0] == EQUALITY and len(atom) == 3:
+        table.equality = True
+        sign = "=" if positive else "!="
+        return f"{_term(atom[1], table)} {sign} {_term(atom[2], table)}"
+    predicate = table.symbol("p", atom[0])
+    args = ",".join(_term(arg, table) for arg in atom[1:])
+    text = f"{predicate}({args})" if args else predicate
+    return text if positive else f"~{text}"
+
+
+def _disjunction(clause: Clause, table: SymbolTable) -> str:
+    literals = [_literal(literal, table) for literal in _bound(clause)]
+    return " | ".join(literals) if literals else "$false"
+
+
+def _bound(clause: Clause) -> Iterator[Literal]:
+    """The clause's literals with its own parameter bindings applied."""
+    from strips_framework.logic.unify import substitute
+
+    bindings = dict(clause.bindings)
+    for positive, atom in clause.literals:
+        yield positive, substitute(atom, bindings) if bindings else atom
+
+
+def _variables(text: str) -> list[str]:
+    return list(dict.fromkeys(re.findall(r"\bX\d+\b", text)))
+
+
+def _closed(disjunction: str) -> str:
+    variables = _variables(disjunction)
+    return f"![{','.join(variables)}]: ({disjunction})" if variables else f"({disjunction})"
+
+
+def to_tptp(task: ProofTask) -> tuple[str, SymbolTable]:
+    """The task as a TPTP problem, with the table that reads E's answers back."""
+    table = SymbolTable(task.unique_names)
+    lines = [
+        f"cnf(a{number}, axiom, {_disjunction(clause, table)})."
+        for number, clause in enumerate(task.axioms)
+    ]
+    if table.params:
+        raise ValueError("an axiom has parameters: only the goal may have them")
+    goals = [_disjunction(clause, table) for clause in task.negated_goal]
+    if task.unique_names and table.equality:
+        names = list(table.constants)
+        lines.extend(
+            f"cnf(u{i}_{j}, axiom, {names[i]} != {names[j]})."
+            for i in range(len(names))
+            for j in range(i + 1, len(names))
+        )
+    if not goals:
+        return "\n".join(lines) + "\n", table
+    if table.params:
+        body = " & ".join(_closed(goal) for goal in goals)
+        params = ",".join(table.params.values())
+        lines.append(f"fof(goal, question, ?[{params}]: ~({body})).")
+    else:
+        lines.extend(f"cnf(g{number}, negated_conjecture, {goal})." for number, goal in enumerate(goals))
+    return "\n".join(lines) + "\n", table
+
+
+_TOKEN = re.compile(r'\s*("[^"]*"|[A-Za-z_][A-Za-z0-9_]*|[(),\[\]|])')
+
+
+def _tokens(text: str) -> list[str]:
+    tokens = []
+    pos = 0
+    while pos < len(text) and text[pos:].strip():
+        found = _TOKEN.match(text, pos)
+        if found is None:
+            raise ValueError(f"unexpected answer text from E: {text!r}")
+        tokens.append(found.group(1))
+        pos = found.end()
+    return tokens
+
+
+class _UnknownSymbol(Exception):
+    """An answer term uses a symbol E introduced (a Skolem function): not a binding."""
+
+
+def _parse_term(tokens: list[str], pos: int, table: SymbolTable) -> tuple[Term | None, int]:
+    """A term at ``tokens[pos]``: ``None`` for a variable (the answer leaves it open)."""
+    head = tokens[pos]
+    pos += 1
+    if head[0].isupper() or head[0] == "_":
+        return None, pos
+    name = table.original(head)
+    if name is None or name.startswith(SKOLEM_PREFIX):
+        raise _UnknownSymbol(head)
+    if pos < len(tokens) and tokens[pos] == "(":
+        args: list[Term] = []
+        pos += 1
+        while True:
+            arg, pos = _parse_term(tokens, pos, table)
+            if arg is None:
+                raise _UnknownSymbol("a variable inside a term")
+            args.append(arg)
+            if tokens[pos] == ")":
+                return (name, *args), pos + 1
+            pos += 1  # ','
+    return name, pos
+
+
+def parse_answers(lines: Iterable[str], table: SymbolTable) -> list[Answer]:
+    """The bindings of E's ``# SZS answers Tuple [[t1, t2]|_]`` lines, in E's order;
+    tuples with E's own Skolem symbols or variables inside terms are left out (a parameter
+    is never bound to those, paper III.A), a variable alone leaves its parameter open."""
+    params = list(table.params)
+    answers: list[Answer] = []
+    for line in lines:
+        if not line.startswith("# SZS answers Tuple"):
+            continue
+        tokens = _tokens(line.removeprefix("# SZS answers Tuple").split(" for ")[0])
+        try:
+            values = _tuple(tokens, table)
+        except _UnknownSymbol:
+            continue
+        binding = tuple(
+            sorted(
+                ((p, v) for p, v in zip(params, values) if v is not None),
+                key=lambda pair: (pair[0].name, pair[0].tag),
+            )
+        )
+        if binding not in answers:
+            answers.append(binding)
+    return answers
+
+
+def _tuple(tokens: list[str], table: SymbolTable) -> list[Term | None]:
+    """``[ [ t1 , t2 ] | _ ]``: the terms of the first (only) tuple."""
+    pos = 2  # '[' '['
+    values: list[Term | None] = []
+    while tokens[pos] != "]":
+        value, pos = _parse_term(tokens, pos, table)
+        values.append(value)
+        if tokens[pos] == ",":
+            pos += 1
+    return values

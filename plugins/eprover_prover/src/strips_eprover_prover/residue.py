@@ -1,0 +1,116 @@
+"""What is left of a goal E could not prove: the uncompleted proof E does not keep.
+
+Means-ends analysis needs the clauses still to be refuted (paper, III.C). E only says
+"not proved", so they are made here, the way a set-of-support search makes them: the
+negated goal, then its binary resolvents with the model's clauses (breadth first, with the
+paper's parameter rules through the core's unifier), at most :data:`LIMIT` clauses, and
+then every clause dropped that another one subsumes with no more parameter bindings.
+Ground facts cut a goal down (``~P(a) | ~Q(a)`` with ``P(a)`` leaves ``~Q(a)``), the model's
+rules turn it into what would establish it.
+"""
+
+from __future__ import annotations
+
+import heapq
+
+from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.logic.terms import Param, Term
+from strips_framework.logic.unify import match, substitute, unify
+from strips_framework.proving import ProofTask
+
+#: Clauses made at most: the uncompleted proof of a big model stays small and quick.
+LIMIT = 120
+#: Added to the model clause's variables to rename it apart from the goal clause's.
+_OFFSET = 1 << 16
+
+
+def _shift(term: Term) -> Term:
+    kind = type(term)
+    if kind is int:
+        return term + _OFFSET
+    if kind is tuple:
+        return (term[0], *[_shift(arg) for arg in term[1:]])
+    return term
+
+
+def _renumber(term: Term, numbering: dict[int, int]) -> Term:
+    kind = type(term)
+    if kind is int:
+        return numbering.setdefault(term, len(numbering))
+    if kind is tuple:
+        return (term[0], *[_renumber(arg, numbering) for arg in term[1:]])
+    return term
+
+
+def _resolvent(clause: Clause, i: int, partner: Clause, j: int) -> Clause | None:
+    subst: dict = dict(clause.bindings)
+    for param, value in partner.bindings:
+        if unify(param, value, subst) is None:
+            return None
+    theirs = [(sign, _shift(atom)) for sign, atom in partner.literals]
+    if unify(clause.literals[i][1], theirs[j][1], subst) is None:
+        return None
+    rest = [*clause.literals[:i], *clause.literals[i + 1 :], *theirs[:j], *theirs[j + 1 :]]
+    numbering: dict[int, int] = {}
+    literals = list(
+        dict.fromkeys((sign, _renumber(substitute(atom, subst), numbering)) for sign, atom in rest)
+    )
+    if not literals or any((not sign, atom) in literals for sign, atom in literals):
+        return None  # the empty clause (E would have found it) or a tautology
+    bindings = sorted(
+        ((key, substitute(key, subst)) for key in subst if type(key) is Param),
+        key=lambda pair: (pair[0].name, pair[0].tag),
+    )
+    return Clause(literals, bindings, label=clause.label)
+
+
+def _subsumes(c: Clause, d: Clause) -> bool:
+    """Set subsumption with ``c``'s bindings among ``d``'s (then ``c`` is as general)."""
+    if len(c.literals) > len(d.literals) or not set(c.bindings) <= set(d.bindings):
+        return False
+    return _match_all(list(c.literals), list(d.literals), {})
+
+
+def _match_all(pattern: list[Literal], target: list[Literal], subst: dict) -> bool:
+    if not pattern:
+        return True
+    (sign, atom), rest = pattern[0], pattern[1:]
+    for target_sign, target_atom in target:
+        if target_sign is sign:
+            extended = match(atom, target_atom, dict(subst))
+            if extended is not None and _match_all(rest, target, extended):
+                return True
+    return False
+
+
+def residue(task: ProofTask) -> tuple[Clause, ...]:
+    """The uncompleted proof of ``task`` (see the module docstring), in the order made."""
+    found = list(dict.fromkeys(task.negated_goal))
+    known = set(found)
+    by_key: dict[tuple[bool, str], list[tuple[Clause, int]]] = {}
+    for axiom in task.axioms:
+        for j, (sign, atom) in enumerate(axiom.literals):
+            by_key.setdefault((sign, atom[0]), []).append((axiom, j))
+    waiting = [(len(c.literals), n, c) for n, c in enumerate(found)]
+    heapq.heapify(waiting)
+    while waiting and len(found) < LIMIT:
+        clause = heapq.heappop(waiting)[2]
+        for i, (sign, atom) in enumerate(clause.literals):
+            for partner, j in by_key.get((not sign, atom[0]), ()):
+                if len(found) >= LIMIT:
+                    break
+                made = _resolvent(clause, i, partner, j)
+                if made is not None and made not in known:
+                    known.add(made)
+                    found.append(made)
+                    heapq.heappush(waiting, (len(made.literals), len(found), made))
+    kept: list[Clause] = []
+    for n, c in enumerate(found):
+        # A clause goes if another subsumes it; of two that subsume each other, the first stays.
+        if not any(
+            _subsumes(d, c) and (m < n or not _subsumes(c, d))
+            for m, d in enumerate(found)
+            if m != n
+        ):
+            kept.append(c)
+    return tuple(kept)

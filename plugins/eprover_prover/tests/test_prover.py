@@ -1,0 +1,88 @@
+"""E behind the prover interface: answers, unique names, effort, the uncompleted proof,
+the paper's tasks, and the error when the binary is missing."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from strips_eprover_prover import EProver
+from strips_eprover_prover.residue import residue
+
+from strips_framework.config import Config
+from strips_framework.errors import PluginError
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Param
+from strips_framework.planner import Planner
+from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_framework.simulate import replay
+from strips_framework.testing.prover_cases import pigeonhole
+
+needs_e = pytest.mark.skipif(shutil.which("eprover") is None, reason="eprover not installed")
+M = Param("m")
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
+
+
+def unit(positive: bool, *atom: object) -> Clause:
+    return Clause([(positive, tuple(atom))])
+
+
+@needs_e
+def test_parameters_are_answer_variables() -> None:
+    axioms = [unit(True, "P", "a"), unit(True, "P", "b"), unit(True, "Q", "b")]
+    goal = [Clause([(False, ("P", M)), (False, ("Q", M))])]
+    result = EProver().prove(ProofTask(axioms, goal, max_answers=3))
+    assert result.status == PROVED and result.answers == (((M, "b"),),)
+    both = EProver().prove(ProofTask(axioms, [unit(False, "P", M)], max_answers=3))
+    assert sorted(both.answers) == [((M, "a"),), ((M, "b"),)]
+
+
+@needs_e
+def test_no_answer_with_a_skolem_term() -> None:
+    # exists x: P(x) in the model gives P(sk!1): true, but sk!1 is no binding (III.A).
+    result = EProver().prove(ProofTask([unit(True, "P", "sk!1")], [unit(False, "P", M)]))
+    assert result.status == GAVE_UP and result.answers == ()
+
+
+@needs_e
+def test_unique_names_make_constants_distinct() -> None:
+    goal = [unit(True, "=", 0, "a")]  # negated "exists x: x != a"
+    axioms = [unit(True, "P", "b")]
+    assert EProver().prove(ProofTask(axioms, goal, unique_names=True)).status == PROVED
+    assert EProver().prove(ProofTask(axioms, goal)).status == SATURATED
+
+
+@needs_e
+def test_effort_is_processed_clauses() -> None:
+    hard = pigeonhole(6)
+    task = ProofTask(hard.axioms, hard.negated_goal, effort=5)
+    result = EProver().prove(task)
+    assert result.status == GAVE_UP and result.effort_used == 5
+    assert EProver().prove(task) == result
+
+
+def test_uncompleted_proof_is_the_goal_cut_down_by_the_model() -> None:
+    axioms = [unit(True, "P", "a"), Clause([(False, ("R", 0)), (True, ("Q", 0))])]
+    goal = [Clause([(False, ("P", M)), (False, ("Q", M))])]
+    texts = [str(c) for c in residue(ProofTask(axioms, goal))]
+    # ~P(m) | ~Q(m) is subsumed by ~Q(a) [m=a]? No: that one made a binding. Both stay,
+    # with the rule's subgoal ~R(a) for Q(a).
+    assert texts[0] == "~P(m) | ~Q(m)"
+    assert "~Q(a)  [m=a]" in texts and "~R(a)  [m=a]" in texts
+
+
+def test_missing_binary_is_one_clear_error() -> None:
+    with pytest.raises(PluginError, match="not on PATH"):
+        EProver(binary="no-such-eprover").prove(ProofTask([], [unit(False, "P")]))
+
+
+@needs_e
+@pytest.mark.parametrize("task", ["three-boxes", "robot-world/light", "robot-world/other-room"])
+def test_paper_tasks_solve_with_valid_plans(task: str) -> None:
+    config = Config.from_dict({"prover": {"name": "eprover"}})
+    planner = Planner.create(config)
+    path = EXAMPLES / f"{task}.strips"
+    result = planner.run(path)
+    assert result.plan is not None
+    assert replay(planner.load(path), [str(step) for step in result.plan]).valid

@@ -1,0 +1,165 @@
+"""Every way a status could be wrong, each shown on a problem that exposes it.
+
+A wrong ``Unsatisfiable`` makes invalid plans, a wrong ``Satisfiable`` loses them. Each
+test below names the part of the calculus whose breakage it catches; breaking that part
+(the mutants listed in the plugin's README) makes the test fail, since the problem is
+decided only when the part works. Problems are TPTP text, run in both configurations:
+with a set of support and without (literal selection).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from strips_framework.formats.tptp import parse_tptp, szs_status
+from strips_framework.logic.clauses import Clause
+from strips_framework.proving import GAVE_UP, PROVED, SATURATED
+from strips_resolution_prover import ResolutionProver
+from strips_resolution_prover.pclause import PClause, from_clause
+from strips_resolution_prover.subsumption import subsumes
+
+CONFIGS = {"sos": {}, "no-sos": {"set_of_support": False}}
+configs = pytest.mark.parametrize("options", CONFIGS.values(), ids=list(CONFIGS))
+
+
+def status(text: str, effort: int = 500, **options: object) -> str:
+    problem = parse_tptp(text)
+    return szs_status(problem, ResolutionProver(**options).prove(problem.task(effort)))
+
+
+@configs
+def test_factoring_of_given_clauses(options: dict) -> None:
+    # Refutable only with factors of both clauses; with the first an axiom it is the
+    # given clauses' factors (set of support) or the factoring rule itself (selection).
+    assert status("cnf(a, axiom, p(X) | p(Y)). cnf(b, negated_conjecture, ~p(U) | ~p(V)).",
+                  **options) == "Unsatisfiable"  # fmt: skip
+    assert status("cnf(a, plain, p(X) | p(Y)). cnf(b, plain, ~p(U) | ~p(V)).",
+                  **options) == "Unsatisfiable"  # fmt: skip
+
+
+@configs
+def test_subsumption_respects_polarity_and_instances(options: dict) -> None:
+    # p(a) must not delete ~p(a) | q (polarity), nor p(X) | r(X) delete p(a) | r(b).
+    assert status("cnf(a, plain, p(a)). cnf(b, plain, ~p(a) | q). cnf(c, plain, ~q).",
+                  **options) == "Unsatisfiable"  # fmt: skip
+    assert status("cnf(a, plain, p(X) | r(X)). cnf(b, plain, p(a) | r(b)). "
+                  "cnf(c, plain, ~p(a)). cnf(d, plain, ~r(b)).", **options) == "Unsatisfiable"  # fmt: skip
+
+
+@configs
+def test_subsumption_makes_saturation_finite(options: dict) -> None:
+    # p(f(X)) | q(Y), p(f(f(X))) | q(Y), ... are all instances of p(X) | q(Y): only
+    # forward subsumption (of a non-unit clause) stops the chain.
+    text = "cnf(a, plain, p(X) | q(Y)). cnf(b, plain, ~p(X) | p(f(X))). cnf(c, plain, ~q(a) | r)."
+    assert status(text, effort=200, **options) == "Satisfiable"
+
+
+
+def _clause(*literals: tuple[bool, tuple]) -> PClause:
+    imported = from_clause(Clause(literals), sos=True)
+    assert imported is not None
+    return imported
+
+
+def test_subsumption_maps_literals_one_to_one_with_their_signs() -> None:
+    # p(X,X) | ~p(Y,Z) matches ~p(a,a) | p(a,b) only with the signs swapped.
+    assert not subsumes(
+        _clause((True, ("p", 0, 0)), (False, ("p", 1, 2))),
+        _clause((False, ("p", "a", "a")), (True, ("p", "a", "b"))),
+    )
+    # r(X,Y) | r(Y,X) reaches r(a,a) | r(b,c) only by using r(a,a) twice (multiset).
+    assert not subsumes(
+        _clause((True, ("r", 0, 1)), (True, ("r", 1, 0))),
+        _clause((True, ("r", "a", "a")), (True, ("r", "b", "c"))),
+    )
+    assert subsumes(
+        _clause((True, ("r", 0, 1)), (False, ("p", 1))),
+        _clause((True, ("r", "a", "b")), (False, ("p", "b")), (True, ("q",))),
+    )
+
+
+def test_unit_subsumption_of_new_clauses() -> None:
+    # An axiom of the set of support is never deleted, so only the unit p(X) stops
+    # p(f(X)), p(f(f(X))), ... as they are derived.
+    text = "cnf(a, axiom, ~p(X) | p(f(X))). cnf(b, negated_conjecture, p(X))."
+    assert status(text, effort=200) == "Satisfiable"
+
+
+@configs
+def test_paramodulation_both_ways_and_below_the_top(options: dict) -> None:
+    # From the axiom into the goal, under a function symbol, and with a side literal.
+    assert status("fof(e, axiom, f(a) = b). fof(p, axiom, p(g(f(a)))). "
+                  "fof(c, conjecture, p(g(b))).", **options) == "Theorem"  # fmt: skip
+    # From the goal's descendants into an axiom: the goal's equation is the only one.
+    assert status("fof(p, axiom, ![X]: (q(X) => p(h(X)))). fof(q, axiom, q(a)). "
+                  "fof(c, conjecture, a = b => p(h(b))).", **options) == "Theorem"  # fmt: skip
+    assert status("cnf(e, plain, a = b | s). cnf(n, plain, ~s). cnf(p, plain, p(a)). "
+                  "cnf(q, plain, ~p(b)).", **options) == "Unsatisfiable"  # fmt: skip
+
+
+@configs
+def test_no_satisfiable_claim_with_equality_from_an_incomplete_calculus(options: dict) -> None:
+    # A pet/owner puzzle with <=> and =, satisfiable only if "owner" were not a function:
+    # whatever the search does, it may not report CounterSatisfiable for a theorem, and
+    # an equality problem it did not refute is GaveUp (the classic calculus is not
+    # complete for equality).
+    pets = """
+        fof(owner_unique, axiom, ![P, X, Y]: ((owns(X, P) & owns(Y, P)) => X = Y)).
+        fof(pet_def, axiom, ![P]: (pet(P) <=> ?[X]: owns(X, P))).
+        fof(rex, axiom, pet(rex)).
+        fof(who, axiom, owns(ann, rex) | owns(bob, rex)).
+        fof(not_bob, axiom, ~owns(bob, rex)).
+        fof(walks, axiom, ![X, P]: (walks(X, P) <=> (owns(X, P) & pet(P)))).
+        fof(goal, conjecture, walks(ann, rex) & ![X]: (owns(X, rex) => X = ann)).
+    """
+    assert status(pets, **options) == "Theorem"
+    assert status(pets, effort=3, **options) == GAVE_UP
+    assert status("fof(a, axiom, f(a) = a). fof(c, conjecture, p(a)).", effort=20, **options) == (
+        GAVE_UP
+    )
+
+
+def test_set_of_support_with_inconsistent_axioms_claims_nothing() -> None:
+    # The goal is never touched, but the axioms alone are contradictory, so it follows:
+    # a set of support is complete only over satisfiable axioms.
+    text = "cnf(a, axiom, p | q). cnf(b, axiom, ~p). cnf(c, axiom, ~q). fof(g, conjecture, r)."
+    assert status(text) == GAVE_UP
+    assert status(text, set_of_support=False) == "Theorem"
+    assert status(text, schedule=True) == "Theorem"  # the automatic mode saturates next
+    # Axioms that all have a positive literal are satisfiable: saturation is shown.
+    assert status("cnf(a, axiom, p | ~q). cnf(b, axiom, q). fof(g, conjecture, r).") == (
+        "CounterSatisfiable"
+    )
+
+
+@configs
+def test_discarded_clauses_make_saturation_inconclusive(options: dict) -> None:
+    # The refutation needs p(f(f(f(a)))), heavier than max_weight allows: giving up is
+    # right, "Satisfiable" would be wrong.
+    text = "cnf(a, plain, p(a)). cnf(b, plain, ~p(X) | p(f(X))). cnf(c, plain, ~p(f(f(f(a)))))."
+    assert status(text, **options) == "Unsatisfiable"
+    assert status(text, max_weight=6, **options) == GAVE_UP
+    assert status(text, max_term_depth=1, **options) == GAVE_UP
+
+
+def test_unique_names_refute_distinct_constants() -> None:
+    prover = ResolutionProver()
+    problem = parse_tptp("fof(a, axiom, p(a)). fof(c, conjecture, ?[X]: (p(X) & X != b)).")
+    assert prover.prove(problem.task(100, unique_names=True)).status == PROVED
+    assert prover.prove(problem.task(100)).status == GAVE_UP
+
+
+@configs
+def test_unique_names_instantiate_equations(options: dict) -> None:
+    # exists x: x != a follows once another name is known (x := b); with a only, it does
+    # not (a one-element world), and without unique names it does not either.
+    prover = ResolutionProver(**options)
+    problem = parse_tptp("fof(a, axiom, p(b)). fof(c, conjecture, ?[X]: X != a).")
+    assert prover.prove(problem.task(100, unique_names=True)).proved
+    assert not prover.prove(problem.task(100)).proved
+    alone = parse_tptp("fof(c, conjecture, ?[X]: X != a).")
+    assert not prover.prove(alone.task(100, unique_names=True)).proved
+    # ... and as an axiom under a set of support: everything is a, yet b is not a.
+    contradiction = parse_tptp("fof(a, axiom, ![X]: X = a). fof(b, axiom, p(b)). "
+                               "fof(c, conjecture, q).")  # fmt: skip
+    assert prover.prove(contradiction.task(100, unique_names=True)).proved
