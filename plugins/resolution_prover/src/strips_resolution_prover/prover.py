@@ -177,7 +177,11 @@ class _Axioms(_Retained):
     clause each came from (``by_origin``), so a model's deletions hide them by id."""
 
     def __init__(
-        self, options: ResolutionProver, initial: InitialModel, unique_names: bool
+        self,
+        options: ResolutionProver,
+        initial: InitialModel,
+        unique_names: bool,
+        fresh: bool = False,
     ) -> None:
         super().__init__(0)
         self.by_origin: dict[int, list[int]] = {}
@@ -185,7 +189,7 @@ class _Axioms(_Retained):
         self.limits = Limits(options.max_weight)
         self.uses_equality = _mentions_equality(initial.clauses)
         #: Whether each attempt takes all its axioms afresh (see the module docstring).
-        self.fresh = not options.set_of_support or (unique_names and self.uses_equality)
+        self.fresh = fresh or not options.set_of_support or (unique_names and self.uses_equality)
         #: Saturation shows satisfiability only over axioms known to be satisfiable
         #: (:mod:`.completeness`); M0's verdict is made once, for all its models. Every
         #: clause has a positive literal in ``all_positive`` M0s, and additions keep that.
@@ -193,8 +197,6 @@ class _Axioms(_Retained):
             initial.clauses, set_of_support=True, uses_equality=False
         )
         self.all_positive = all(any(pos for pos, _ in c.literals) for c in initial.clauses)
-        self._m0 = initial.clauses
-        self._names: tuple[str, ...] | None = None
         if self.fresh:
             return
         for origin, axiom in enumerate(initial.clauses):
@@ -224,14 +226,6 @@ class _Axioms(_Retained):
             self._add(usable, origin, options, unique_names)
 
 
-    def names(self) -> tuple[str, ...]:
-        """M0's constants, for unique names (found on first use: only an attempt whose
-        goal has an equation needs them)."""
-        if self._names is None:
-            self._names = names_of(lit for clause in self._m0 for lit in clause.literals)
-        return self._names
-
-
 class ResolutionSession:
     """The prover opened on one M0 (see the module docstring)."""
 
@@ -240,6 +234,8 @@ class ResolutionSession:
         self.initial = initial
         self.unique_names = unique_names
         self.axioms = _Axioms(options, initial, unique_names)
+        #: No axioms of its own: the base of an attempt that takes its axioms afresh.
+        self.none = _Axioms(options, InitialModel(()), unique_names, fresh=True)
 
     def prove(
         self,
@@ -253,15 +249,21 @@ class ResolutionSession:
         if self.options.schedule:  # two calculi in turn: each attempt is a task of its own
             task = ProofTask(model.clauses(), negated_goal, effort, max_answers, self.unique_names)
             return prove_scheduled(self.options, task)
+        # Unique names instantiate equations over the constants the visible clauses
+        # name, which a model's deletions change: such an attempt takes M0 afresh.
+        fresh = self.axioms.fresh or (
+            self.unique_names and _mentions_equality(chain(negated_goal, model.added_clauses()))
+        )
         hidden_m0 = model.hidden()
-        if not self.axioms.fresh:
-            hidden = {cid for index in hidden_m0 for cid in self.axioms.by_origin.get(index, ())}
+        axioms = self.axioms
+        if not fresh:
+            hidden = {cid for index in hidden_m0 for cid in axioms.by_origin.get(index, ())}
             extra: Sequence[Clause] = model.added_clauses()
         else:
-            hidden, extra = set(), tuple(model.clauses())
+            axioms, hidden, extra = self.none, set(), tuple(model.clauses())
         attempt = _Saturation(
             self.options,
-            self.axioms,
+            axioms,
             hidden,
             extra,
             tuple(negated_goal),
@@ -313,12 +315,11 @@ class _Saturation:
         self.uses_equality = axioms.uses_equality or _mentions_equality(
             chain(extra, negated_goal)
         )
-        # Unique names: the constants equations are instantiated with (M0's are in
-        # ``extra`` when the axioms are fresh).
+        # Unique names: the constants equations are instantiated with (an attempt with
+        # equations under unique names has its axioms fresh, all in ``extra``).
         self.names: tuple[str, ...] = ()
         if self.uses_equality and unique_names:
-            own = names_of(lit for c in chain(extra, negated_goal) for lit in c.literals)
-            self.names = own if axioms.fresh else tuple(sorted({*axioms.names(), *own}))
+            self.names = names_of(lit for c in chain(extra, negated_goal) for lit in c.literals)
 
     # -- the loop -----------------------------------------------------------------------
 
