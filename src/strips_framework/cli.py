@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from strips_framework import exit_codes
 from strips_framework.bench import command as bench_command
+from strips_framework.macrops import command as macrop_command
 from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
@@ -49,6 +50,8 @@ def _parser() -> argparse.ArgumentParser:
     solve.add_argument("--plan-file", type=Path, help="also write the plan here, IPC style")
     solve.add_argument("--json", action="store_true", help="print the result as JSON")
     solve.add_argument("--tree", type=Path, help="write the search tree as Graphviz DOT")
+    solve.add_argument("--macrops", type=Path, metavar="LIBRARY",
+                       help="use the MACROPs of this library (see 'strips learn')")
 
     prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
     prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
@@ -70,6 +73,7 @@ def _parser() -> argparse.ArgumentParser:
     )
 
     bench_command.add_parser(commands)
+    macrop_command.add_parsers(commands)
 
     commands.add_parser("plugins", help="list the registered implementations and options")
     return parser
@@ -107,10 +111,19 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _prove(planner, args)
         if args.command == "validate":
             return _validate(planner, args)
+        if args.command in MACROP_COMMANDS:
+            return MACROP_COMMANDS[args.command](planner, args)
         return _plugins(planner)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
         return exit_codes.INPUT_ERROR
+
+
+MACROP_COMMANDS = {
+    "learn": macrop_command.learn,
+    "table": macrop_command.table,
+    "execute": macrop_command.execute_command,
+}
 
 
 def _domain_and_problem(files: list[Path], command: str, rest: int = 0) -> tuple[Path | None, Path]:
@@ -175,7 +188,7 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     domain, problem = _domain_and_problem(args.files, "solve")
     try:
         with enforced(planner.config.limits):
-            result = planner.run(problem, domain)
+            result = planner.run(problem, domain, args.macrops)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
         return _report_limit(args, limit.status)
     except MemoryError:

@@ -25,6 +25,7 @@ from strips_framework.plugins import Registry
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
+    from strips_framework.macrops.macrop import Library
     from strips_framework.pddl import PddlTask
     from strips_framework.problem import Problem
     from strips_framework.proving import TheoremProver
@@ -81,11 +82,17 @@ class Planner:
         return self.config.build(self.registry, "prover")
 
     def run(
-        self, problem_path: Path, domain_path: Path | None = None
+        self, problem_path: Path, domain_path: Path | None = None, library: Path | None = None
     ) -> SearchResult | ForwardResult:
         """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
         solve it with the configured strategy, whichever kind it is (a config's
-        :meth:`~Config.for_pddl` gives PDDL input its default strategy)."""
+        :meth:`~Config.for_pddl` gives PDDL input its default strategy), with the MACROPs
+        of the ``library`` file if one is given (world-model strategies only)."""
+        if library is not None and self.searches_ground_tasks:
+            raise ConfigError(
+                f"{self.config.source}: MACROPs are used by the world-model strategies "
+                f"('means-ends', 'model-astar'), not by '{self.config.choices['strategy'].name}'"
+            )
         started = time.perf_counter()
         if not is_pddl(problem_path, domain_path):
             if self.searches_ground_tasks:
@@ -95,13 +102,15 @@ class Planner:
                     "native problem (first-order world models and axioms): use a world-model "
                     "strategy such as 'means-ends' or 'model-astar'"
                 )
-            return self.solve(self.load(problem_path))
+            problem = self.load(problem_path)
+            return self.solve(problem, _read_library(library, problem))
         pddl = self.load_pddl(problem_path, domain_path)
         parsed = time.perf_counter()
         if not self.searches_ground_tasks:
             from strips_framework.pddl import to_problem
 
-            return self.solve(to_problem(pddl))
+            problem = to_problem(pddl)
+            return self.solve(problem, _read_library(library, problem))
         from strips_framework.grounding import ground
 
         task = ground(pddl)
@@ -115,10 +124,11 @@ class Planner:
         )
         return attrs.evolve(result, statistics=statistics)
 
-    def solve(self, problem: Problem) -> SearchResult:
+    def solve(self, problem: Problem, library: Library | None = None) -> SearchResult:
         """Search for a plan with the strategy, prover, difference extractor, relevance
         filter and evaluator of the config (a world-model strategy; after checking that the prover handles what
-        the problem uses)."""
+        the problem uses). With a MACROP ``library`` the relevance filter also offers its
+        MACROPs (see :mod:`strips_framework.macrops.search`)."""
         check_problem(problem, self.registry, self.config)
         build = self.config.build
         strategy = build(self.registry, "strategy")
@@ -127,11 +137,16 @@ class Planner:
                 f"{self.config.source}: strategy '{strategy.name}' searches ground tasks, "
                 "not first-order problems: give it PDDL input"
             )
+        relevance = build(self.registry, "relevance")
+        if library is not None:
+            from strips_framework.macrops.search import MacroRelevance
+
+            relevance = MacroRelevance.of(relevance, library)
         return strategy.search(
             problem,
             build(self.registry, "prover"),
             build(self.registry, "difference"),
-            build(self.registry, "relevance"),
+            relevance,
             build(self.registry, "evaluator"),
             self.config.limits,
         )
@@ -149,6 +164,14 @@ class Planner:
         heuristic = build(self.registry, "heuristic")
         started = time.perf_counter() if started is None else started
         return strategy.search_task(task, heuristic.for_task(task), self.config.limits, started)
+
+
+def _read_library(path: Path | None, problem: Problem) -> Library | None:
+    if path is None:
+        return None
+    from strips_framework.macrops.library_file import read_library
+
+    return read_library(path, problem)
 
 
 def is_pddl(problem_path: Path, domain_path: Path | None = None) -> bool:

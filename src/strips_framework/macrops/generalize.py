@@ -161,10 +161,6 @@ def generalize(ground: GroundTable) -> Generalized:
     distinct.extend(_protections(lifted, example))
     lifted = TriangleTable(lifted.steps, lifted.marked, lifted.unmarked, distinct)
     names = {p: Param(f"p{i}") for i, p in enumerate(lifted.parameters(), start=1)}
-    for d in lifted.distinct:  # a constraint may name a parameter the table no longer does
-        for side in (d.left, d.right):
-            if type(side) is Param and side not in names:
-                names[side] = Param(f"p{len(names) + 1}")
     return Generalized(
         lifted.substituted(names),
         {names[p]: value for p, value in example.items() if p in names},

@@ -32,7 +32,7 @@ def instances(
     Parameters of steps i .. n that the kernel leaves open range over ``constants``."""
     atoms = [substitute(a, binding or {}) for a in table.kernel(i)]
     by_predicate: dict[tuple[str, int], list[Atom]] = defaultdict(list)
-    for atom in closed:
+    for atom in sorted(closed, key=repr):  # a fixed order: searches are reproducible
         by_predicate[atom[0], len(atom)].append(atom)
     distinct = table.kernel_distinct(i)
     open_params = [

@@ -121,7 +121,8 @@ class TriangleTable:
         return found
 
     def parameters(self) -> tuple[Param, ...]:
-        """The table's parameters, in order of first appearance (steps first)."""
+        """The table's parameters, in order of first appearance (steps, cells, then the
+        constraints)."""
         seen: dict[Param, None] = {}
         for step in self.steps:
             for arg in step.arguments:
@@ -129,6 +130,9 @@ class TriangleTable:
         for key in sorted(self.marked):
             for atom in self.marked[key]:
                 _collect(atom, seen)
+        for d in self.distinct:
+            _collect(d.left, seen)
+            _collect(d.right, seen)
         return tuple(seen)
 
     def substituted(self, subst: dict) -> TriangleTable:

@@ -1,0 +1,170 @@
+"""MACROPs inside the means-ends search (Fikes, Hart & Nilsson 1972, section 5).
+
+Each MACROP enters the search as macro operators: the whole table and each of its edited
+parts (:meth:`Macrop.parts`), as a :class:`MacroSchema` whose precondition is the part's
+kernel 1 (its column-0 clauses, and its :class:`Distinct` constraints as inequalities)
+and whose add list is its goal row. The relevance filter of the config then finds a
+MACROP relevant exactly as it finds an operator: when the add list of one of its
+operators (the last of an edited part) continues the uncompleted proof. The search pushes
+the part's precondition as a subgoal and, once it is proved, applies the part's steps one
+after another: one node for the whole sequence, all of its steps in the plan.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from typing import ClassVar
+
+from attrs import field, frozen
+
+from strips_framework.logic.formulas import And, Atomic, Formula
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Param, Term, is_ground
+from strips_framework.logic.unify import substitute, unify
+from strips_framework.macrops.kernels import instances
+from strips_framework.macrops.macrop import Library
+from strips_framework.macrops.table import TriangleTable
+from strips_framework.operators import OperatorInstance
+from strips_framework.problem import WILDCARD, OperatorSchema
+from strips_framework.search.components import RelevanceFilter
+from strips_framework.search.node import Difference, RelevantInstance
+from strips_framework.simulate import State
+from strips_framework.world import WorldModel
+
+
+@frozen
+class MacroSchema(OperatorSchema):
+    """A MACROP (or an edited part of one) as an operator schema."""
+
+    table: TriangleTable | None = field(default=None, eq=False, repr=False)
+
+
+def macro_schema(name: str, table: TriangleTable) -> MacroSchema:
+    conditions: list[Formula] = [Atomic(a) for a in table.kernel(1)]
+    deletes = {
+        pattern for step in table.steps for pattern in step.deletes() if pattern != WILDCARD
+    }
+    return MacroSchema(
+        name=name,
+        parameters=table.parameters(),
+        precondition=And(conditions) if len(conditions) != 1 else conditions[0],
+        add_list=table.goal_row(),
+        delete_list=tuple(sorted(deletes, key=repr)),
+        table=table,
+    )
+
+
+@frozen(cache_hash=True)
+class MacroInstance(OperatorInstance):
+    """An instance of a :class:`MacroSchema`: applied, it applies its table's steps."""
+
+    def bind(self, more: dict[Param, Term]) -> MacroInstance:
+        bound = super().bind(more)
+        return MacroInstance(self.schema, bound.binding)
+
+    def admits(self) -> bool:
+        """The table's :class:`Distinct` constraints hold (they are checked here, not
+        proved with the precondition: inequalities would make the prover reason with
+        equality, which costs it far more than this test)."""
+        table = self.schema.table
+        assert table is not None
+        binding = self.binding_map()
+        return all(d.holds(binding) for d in table.distinct)
+
+    def steps(self) -> tuple[OperatorInstance, ...]:
+        table = self.schema.table
+        assert table is not None
+        binding = self.binding_map()
+        result = []
+        for step in table.steps:
+            args = [substitute(a, binding) for a in step.arguments]
+            result.append(OperatorInstance(step.schema, zip(step.schema.parameters, args)))
+        return tuple(result)
+
+    def apply(self, model: WorldModel) -> WorldModel:
+        for step in self.steps():
+            model = step.apply(model)
+        return model
+
+    def __str__(self) -> str:
+        return f"{self.schema.name}[{', '.join(map(str, self.steps()))}]"
+
+
+@frozen
+class MacroRelevance:
+    """The configured relevance filter, asked about the operators and the library's
+    macro operators together; among instances that continue the proof equally far,
+    MACROPs come first (longest first), since one of them stands for several steps."""
+
+    name: ClassVar[str] = "macrops"
+    inner: RelevanceFilter
+    schemas: tuple[MacroSchema, ...] = field(converter=tuple)
+    instances: int = 3
+    unmet: str = "last"
+
+    @classmethod
+    def of(cls, inner: RelevanceFilter, library: Library) -> MacroRelevance:
+        schemas = [macro_schema(name, table) for m in library.macrops for name, table in m.parts()]
+        return cls(inner, schemas)
+
+    def relevant(
+        self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel
+    ) -> list[RelevantInstance]:
+        found = self.inner.relevant(difference, [*operators, *self.schemas], model)
+        facts: State | None = None
+        ranked = []
+        for rank, item in enumerate(found):
+            schema = item.operator.schema
+            if not isinstance(schema, MacroSchema):
+                ranked.append(((len(item.resolvent.literals), 1, 0, rank), item))
+                continue
+            assert schema.table is not None
+            if facts is None:
+                facts = frozenset(model.facts())
+            partial, resolvent = _cover(schema, item.operator.binding_map(), item.resolvent)
+            item = RelevantInstance(item.operator, resolvent)
+            matches = itertools.islice(
+                instances(schema.table, 1, facts, (), partial), self.instances
+            )
+            held = False
+            for binding in matches:
+                held = True
+                macro = MacroInstance(schema, [(p, binding[p]) for p in schema.parameters if p in binding])
+                ranked.append(((len(item.resolvent.literals), 0, -schema.table.size, rank),
+                               RelevantInstance(macro, item.resolvent)))
+            if not held and self.unmet == "last":
+                macro = MacroInstance(schema, item.operator.binding)
+                if macro.admits():
+                    ranked.append(((len(item.resolvent.literals), 2, -schema.table.size, rank),
+                                   RelevantInstance(macro, item.resolvent)))
+        return [item for _, item in sorted(ranked, key=lambda pair: pair[0])]
+
+
+def _cover(
+    schema: MacroSchema, binding: dict[Param, Term], resolvent: Clause
+) -> tuple[dict[Param, Term], Clause]:
+    """Bind more of the MACROP's parameters so that its goal row resolves away as many
+    further literals of the difference clause as it can (a MACROP is worth most where
+    it achieves several conjuncts of a goal at once); the binding and what is left."""
+    literals = [lit for lit in resolvent.literals if not lit[0]]
+    best: tuple[int, dict[Param, Term], frozenset[int]] = (0, binding, frozenset())
+
+    def extend(start: int, current: dict[Param, Term], covered: frozenset[int]) -> None:
+        nonlocal best
+        if len(covered) > best[0] and all(d.holds(current) for d in schema.table.distinct):
+            best = (len(covered), current, covered)
+        for index in range(start, len(literals)):
+            target = literals[index][1]
+            for atom in schema.add_list:
+                unifier = unify(substitute(atom, current), target, {})
+                if unifier is None or any(type(k) is not Param or not is_ground(v)
+                                          for k, v in unifier.items()):
+                    continue
+                extend(index + 1, {**current, **unifier}, covered | {index})
+
+    extend(0, binding, frozenset())
+    _, chosen, covered = best
+    dropped = {literals[i] for i in covered}
+    rest = [lit for lit in resolvent.literals if lit not in dropped]
+    return chosen, Clause(rest, resolvent.bindings, label=resolvent.label)
