@@ -23,6 +23,10 @@
     expansions = 100000   # states expanded (forward strategies); unlimited if absent
     memory = 4096    # MiB (forward strategies and the CLI); unlimited if absent
 
+    [macrops]        # how 'solve --macrops' uses a library
+    instances = 3    # instances offered per relevant MACROP whose kernel holds
+    subgoals = false # also offer MACROPs whose kernel does not hold, as subgoals
+
     [execution]      # PLANEX's simulated world ('strips execute')
     failure = 0.1    # chance that an action has no effect
     disturbance = 0.05   # chance that the world changes after a step
@@ -57,9 +61,10 @@ DEFAULT_CHOICES = {
     "heuristic": "ff",
     "learner": "triangle-table",
 }
-#: Tables that configure a command rather than a component: ``[execution]`` is PLANEX's
-#: fault model (``strips execute``, see :mod:`strips_framework.macrops.planex`).
-SECTIONS = ("execution",)
+#: Tables that configure a use rather than a component: ``[execution]`` is PLANEX's fault
+#: model (``strips execute``, :mod:`strips_framework.macrops.planex`), ``[macrops]`` how a
+#: search uses a MACROP library (:class:`strips_framework.macrops.search.MacroUse`).
+SECTIONS = ("execution", "macrops")
 #: The strategy PDDL input gets when the config names none: what Fast Downward's users
 #: expect of ``strips solve DOMAIN PROBLEM`` (lazy greedy search with hFF).
 PDDL_DEFAULT_STRATEGY = "lazy-gbfs"

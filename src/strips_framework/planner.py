@@ -139,9 +139,10 @@ class Planner:
             )
         relevance = build(self.registry, "relevance")
         if library is not None:
-            from strips_framework.macrops.search import MacroRelevance
+            from strips_framework.macrops.search import MacroRelevance, MacroUse
 
-            relevance = MacroRelevance.of(relevance, library)
+            use = self.config.section(MacroUse, "macrops")
+            relevance = MacroRelevance.of(relevance, library, use)
         return strategy.search(
             problem,
             build(self.registry, "prover"),

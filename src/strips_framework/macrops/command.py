@@ -13,6 +13,7 @@ from strips_framework.macrops.ground_table import ground_table, parse_plan, step
 from strips_framework.macrops.learning import learn_sequence
 from strips_framework.macrops.library_file import read_library, write_library
 from strips_framework.macrops.macrop import Library
+from strips_framework.macrops.proofs import MacroError
 from strips_framework.macrops.planex import FaultModel, Summary, execute
 from strips_framework.macrops.render import html_table, svg_table, text_table
 from strips_framework.planner import Planner, is_pddl
@@ -100,8 +101,12 @@ def table(planner: Planner, args: argparse.Namespace) -> int:
         if len(args.files) < 2:
             raise StripsError("usage: strips table [DOMAIN] PROBLEM PLAN (or --macrops LIBRARY)")
         problem = _problem(planner, args.files, 1, "table")
-        steps = parse_plan(problem, read_plan(args.files[-1]))
-        drawn, title = ground_table(problem, steps).table, f"{problem.name}: {args.files[-1].name}"
+        try:
+            steps = parse_plan(problem, read_plan(args.files[-1]))
+            drawn = ground_table(problem, steps).table
+        except MacroError as error:
+            raise StripsError(f"{args.files[-1]}: {error}") from None
+        title = f"{problem.name}: {args.files[-1].name}"
     if args.kernel is not None and not 1 <= args.kernel <= drawn.size + 1:
         raise StripsError(f"--kernel must be between 1 and {drawn.size + 1}")
     print(text_table(drawn, title), end="")

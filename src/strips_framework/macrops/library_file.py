@@ -101,6 +101,9 @@ def read_library(path: Path, problem: Problem) -> Library:
     return _Reader(str(path), problem).read(text)
 
 
+_ENTRIES = ("learned-from", "parameters", "step", "row", "unmarked", "distinct", "example")
+
+
 @define
 class _Draft:
     name: str
@@ -169,6 +172,9 @@ class _Reader:
         self.world[name] = (digest, number)
 
     def _entry(self, draft: _Draft, number: int, word: str, rest: str) -> None:
+        if word not in _ENTRIES:
+            raise self.fail(number, f"expected {', '.join(repr(w) for w in _ENTRIES)} or 'end' "
+                            f"in MACROP {draft.name}, got {word!r}")
         if word == "learned-from":
             draft.learned_from = rest
         elif word == "parameters":
@@ -186,15 +192,12 @@ class _Reader:
             self._cell(draft, number, tail, draft.unmarked)
         elif word == "distinct":
             self._distinct(draft, number, rest)
-        elif word == "example":
+        else:
             for pair in rest.split():
                 name, _, value = pair.partition("=")
                 if name not in draft.parameters or not value:
                     raise self.fail(number, f"expected PARAMETER=CONSTANT, got {pair!r}")
                 draft.example[Param(name)] = value
-        else:
-            raise self.fail(number, f"expected 'step', 'row', 'unmarked', 'distinct', "
-                            f"'example' or 'end' in MACROP {draft.name}, got {word!r}")
 
     def _parser(self, draft: _Draft, number: int, text: str) -> WffParser:
         return WffParser(tokenize(text, self.path, number, 1), self.path,

@@ -70,13 +70,19 @@ Replanner = Callable[[Problem], Sequence[Step] | None]
 
 
 def execute(
-    problem: Problem, steps: Sequence[Step], replan: Replanner, faults: FaultModel, run: int = 0
+    problem: Problem,
+    steps: Sequence[Step],
+    replan: Replanner,
+    faults: FaultModel,
+    run: int = 0,
+    world: State | None = None,
 ) -> Execution:
-    """One monitored execution of ``steps`` from the problem's initial state; the random
-    choices come from ``faults.seed`` and the run number."""
+    """One monitored execution of ``steps`` (a valid plan for ``problem``) in a world that
+    starts as ``world`` (default: the problem's initial state); the random choices come
+    from ``faults.seed`` and the run number."""
     rng = random.Random(f"{faults.seed}/{run}")
     simulator = Simulator(problem)
-    state: State = frozenset(problem.facts)
+    state: State = frozenset(problem.facts) if world is None else world
     table = ground_table(problem, steps).table
     events: list[Event] = []
     counts = {"actions": 0, "failures": 0, "disturbances": 0, "skipped": 0, "redone": 0,

@@ -16,7 +16,7 @@ import itertools
 from collections.abc import Sequence
 from typing import ClassVar
 
-from attrs import field, frozen
+from attrs import field, frozen, validators
 
 from strips_framework.logic.formulas import And, Atomic, Formula
 from strips_framework.logic.clauses import Clause
@@ -92,52 +92,65 @@ class MacroInstance(OperatorInstance):
 
 
 @frozen
+class MacroUse:
+    """The ``[macrops]`` table of the config: how a search uses a library.
+
+    A MACROP found relevant is offered in the instances (at most ``instances`` of them)
+    whose kernel 1 holds in the node's world model, so applying it is one proof away.
+    With ``subgoals`` one whose kernel does not hold is also offered, after the operators,
+    with its precondition as the subgoal (the 1972 paper's full use). That costs dearly
+    here: a kernel is a conjunction of many clauses, and a failed proof of it leaves a
+    large difference (the five-part robot goal, which takes 124 nodes with the default,
+    runs out of time with it; see docs/macrops.md).
+    """
+
+    instances: int = field(default=3, validator=[validators.instance_of(int), validators.ge(1)])
+    subgoals: bool = field(default=False, validator=validators.instance_of(bool))
+
+
+@frozen
 class MacroRelevance:
     """The configured relevance filter, asked about the operators and the library's
-    macro operators together; among instances that continue the proof equally far,
-    MACROPs come first (longest first), since one of them stands for several steps."""
+    macro operators together. The inner filter's order is kept (closest to a proof,
+    least harm first), except that among instances that leave equally much of the proof,
+    MACROPs that apply now come before operators, and MACROPs that need subgoals after."""
 
     name: ClassVar[str] = "macrops"
     inner: RelevanceFilter
     schemas: tuple[MacroSchema, ...] = field(converter=tuple)
-    instances: int = 3
-    unmet: str = "last"
+    use: MacroUse = MacroUse()
 
     @classmethod
-    def of(cls, inner: RelevanceFilter, library: Library) -> MacroRelevance:
+    def of(cls, inner: RelevanceFilter, library: Library, use: MacroUse | None = None) -> MacroRelevance:
         schemas = [macro_schema(name, table) for m in library.macrops for name, table in m.parts()]
-        return cls(inner, schemas)
+        return cls(inner, schemas, use or MacroUse())
 
     def relevant(
         self, difference: Difference, operators: Sequence[OperatorSchema], model: WorldModel
     ) -> list[RelevantInstance]:
         found = self.inner.relevant(difference, [*operators, *self.schemas], model)
         facts: State | None = None
-        ranked = []
+        ranked: list[tuple[tuple[int, int, int], RelevantInstance]] = []
         for rank, item in enumerate(found):
             schema = item.operator.schema
             if not isinstance(schema, MacroSchema):
-                ranked.append(((len(item.resolvent.literals), 1, 0, rank), item))
+                ranked.append(((len(item.resolvent.literals), 1, rank), item))
                 continue
             assert schema.table is not None
             if facts is None:
                 facts = frozenset(model.facts())
             partial, resolvent = _cover(schema, item.operator.binding_map(), item.resolvent)
-            item = RelevantInstance(item.operator, resolvent)
-            matches = itertools.islice(
-                instances(schema.table, 1, facts, (), partial), self.instances
-            )
-            held = False
-            for binding in matches:
-                held = True
-                macro = MacroInstance(schema, [(p, binding[p]) for p in schema.parameters if p in binding])
-                ranked.append(((len(item.resolvent.literals), 0, -schema.table.size, rank),
-                               RelevantInstance(macro, item.resolvent)))
-            if not held and self.unmet == "last":
-                macro = MacroInstance(schema, item.operator.binding)
+            size = len(resolvent.literals)
+            held = itertools.islice(instances(schema.table, 1, facts, (), partial), self.use.instances)
+            offered = False
+            for binding in held:
+                offered = True
+                macro = MacroInstance(schema, [(p, binding[p]) for p in schema.parameters])
+                ranked.append(((size, 0, rank), RelevantInstance(macro, resolvent)))
+            if not offered and self.use.subgoals:
+                macro = MacroInstance(schema, partial.items())
                 if macro.admits():
-                    ranked.append(((len(item.resolvent.literals), 2, -schema.table.size, rank),
-                                   RelevantInstance(macro, item.resolvent)))
+                    ranked.append(((size, 2, rank), RelevantInstance(macro, resolvent)))
         return [item for _, item in sorted(ranked, key=lambda pair: pair[0])]
 
 
