@@ -101,6 +101,10 @@ def read_library(path: Path, problem: Problem) -> Library:
     return _Reader(str(path), problem).read(text)
 
 
+#: PDDL types become predicates ``type:NAME`` (see :mod:`strips_framework.pddl.translation`);
+#: the native syntax has no ``:`` in names, so it is read as this (no name the native
+#: syntax or PDDL allows contains it).
+_COLON = "__colon__"
 _ENTRIES = ("learned-from", "parameters", "step", "row", "unmarked", "distinct", "example")
 
 
@@ -236,8 +240,10 @@ class _Reader:
         if not 0 <= col < row:
             raise self.fail(number, f"cell (row {row}, col {col}) is not in the triangle: "
                             "the column must be below the row")
-        parser = self._parser(draft, number, words[3])
-        atoms = tuple(atom for atom, _ in parser.atom_list())
+        parser = self._parser(draft, number, words[3].replace(":", _COLON))
+        atoms = tuple(
+            (atom[0].replace(_COLON, ":"), *atom[1:]) for atom, _ in parser.atom_list()
+        )
         parser.end()
         cells[(row, col)] = atoms
 
