@@ -87,12 +87,8 @@ class Planner:
         """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
         solve it with the configured strategy, whichever kind it is (a config's
         :meth:`~Config.for_pddl` gives PDDL input its default strategy), with the MACROPs
-        of the ``library`` file if one is given (world-model strategies only)."""
-        if library is not None and self.searches_ground_tasks:
-            raise ConfigError(
-                f"{self.config.source}: MACROPs are used by the world-model strategies "
-                f"('means-ends', 'model-astar'), not by '{self.config.choices['strategy'].name}'"
-            )
+        of the ``library`` file if one is given (forward strategies get them as macro
+        operators, see :mod:`strips_framework.macrops.forward`)."""
         started = time.perf_counter()
         if not is_pddl(problem_path, domain_path):
             if self.searches_ground_tasks:
@@ -114,8 +110,17 @@ class Planner:
         from strips_framework.grounding import ground
 
         task = ground(pddl)
+        if library is not None:
+            from strips_framework.macrops.forward import expand, with_macros
+            from strips_framework.pddl import to_problem
+
+            task, steps_of = with_macros(task, _read_library(library, to_problem(pddl)))
         grounded = time.perf_counter()
         result = self.solve_task(task, started)
+        if library is not None and result.plan is not None:
+            steps = tuple(expand(result.plan, steps_of))
+            cost = result.cost if task.uses_costs else len(steps)
+            result = attrs.evolve(result, plan=steps, cost=cost)
         statistics = attrs.evolve(
             result.statistics,
             parse_seconds=parsed - started,
