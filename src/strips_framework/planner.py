@@ -110,17 +110,15 @@ class Planner:
         from strips_framework.grounding import ground
 
         task = ground(pddl)
-        if library is not None:
-            from strips_framework.macrops.forward import expand, with_macros
+        grounded = time.perf_counter()
+        if library is None:
+            result = self.solve_task(task, started)
+        else:
+            from strips_framework.macrops.forward import solve_with_macros
             from strips_framework.pddl import to_problem
 
-            task, steps_of = with_macros(task, _read_library(library, to_problem(pddl)))
-        grounded = time.perf_counter()
-        result = self.solve_task(task, started)
-        if library is not None and result.plan is not None:
-            steps = tuple(expand(result.plan, steps_of))
-            cost = result.cost if task.uses_costs else len(steps)
-            result = attrs.evolve(result, plan=steps, cost=cost)
+            macrops = _read_library(library, to_problem(pddl))
+            result = solve_with_macros(self, task, macrops, started)
         statistics = attrs.evolve(
             result.statistics,
             parse_seconds=parsed - started,

@@ -6,7 +6,6 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
-import attrs
 import pytest
 
 from strips_framework.macrops.generalize import Generalized, generalize
@@ -65,6 +64,3 @@ def random_states(problem: Problem, count: int, seed: int) -> list[State]:
         states.append(frozenset(facts))
     return states
 
-
-def with_facts(problem: Problem, state: State) -> Problem:
-    return attrs.evolve(problem, facts=tuple(sorted(state, key=repr)))

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterator, Sequence
+from typing import TYPE_CHECKING
 
 import attrs
 
@@ -21,6 +22,10 @@ from strips_framework.logic.terms import Param, Term
 from strips_framework.macrops.macrop import Library
 from strips_framework.macrops.proofs import MacroError
 from strips_framework.macrops.table import TriangleTable
+
+if TYPE_CHECKING:
+    from strips_framework.planner import Planner
+    from strips_framework.search.forward.result import ForwardResult
 
 #: Macro operator names start with this, so that plans can be expanded.
 MACRO_PREFIX = "(macrop "
@@ -55,6 +60,19 @@ def with_macros(
             if count >= per_macrop:
                 break
     return attrs.evolve(task, operators=(*task.operators, *added)), steps_of
+
+
+def solve_with_macros(
+    planner: Planner, task: GroundTask, library: Library, started: float | None = None
+) -> ForwardResult:
+    """Search ``task`` with the library's macro operators added; the plan comes back in
+    the task's own steps (on a unit-cost task its cost is then its length)."""
+    grown, steps_of = with_macros(task, library)
+    result = planner.solve_task(grown, started)
+    if result.plan is None:
+        return result
+    steps = tuple(expand(result.plan, steps_of))
+    return attrs.evolve(result, plan=steps, cost=result.cost if task.uses_costs else len(steps))
 
 
 def expand(plan: Sequence[str], steps_of: dict[str, tuple[str, ...]]) -> list[str]:

@@ -24,6 +24,8 @@ from strips_framework.problem import Problem
 
 if TYPE_CHECKING:
     from strips_framework.planner import Planner
+    from strips_framework.search.forward.result import ForwardResult
+    from strips_framework.search.result import SearchResult
 
 
 class MacroLearner(Protocol):
@@ -79,26 +81,43 @@ class Lesson:
     note: str
 
 
-def solve_with(planner: Planner, path: Path, library: Library, domain: Path | None = None):
-    """Solve one problem with the library; the problem, the result and its steps."""
+def solve_with(
+    planner: Planner, path: Path, library: Library, domain: Path | None = None
+) -> tuple[Problem, SearchResult | ForwardResult, list[Step] | None]:
+    """Solve one problem with the library (a forward strategy gets it as macro
+    operators); the problem as a first-order one, the result and the plan's steps."""
+    from strips_framework.macrops.forward import solve_with_macros
     from strips_framework.macrops.ground_table import parse_plan, steps_of
     from strips_framework.planner import is_pddl
 
-    if is_pddl(path, domain):
-        from strips_framework.pddl import to_problem
-
-        problem = to_problem(planner.load_pddl(path, domain))
-        if planner.searches_ground_tasks:
-            from strips_framework.grounding import ground
-
-            result = planner.solve_task(ground(planner.load_pddl(path, domain)))
-            steps = parse_plan(problem, result.plan) if result.plan is not None else None
-            return problem, result, steps
-    else:
+    macrops = library if library.macrops else None
+    if not is_pddl(path, domain):
         problem = planner.load(path)
-    result = planner.solve(problem, library if library.macrops else None)
-    steps = steps_of(result.plan) if result.plan is not None else None
-    return problem, result, steps
+        result = planner.solve(problem, macrops)
+        return problem, result, None if result.plan is None else steps_of(result.plan)
+    from strips_framework.pddl import to_problem
+
+    pddl = planner.load_pddl(path, domain)
+    problem = to_problem(pddl)
+    if not planner.searches_ground_tasks:
+        result = planner.solve(problem, macrops)
+        return problem, result, None if result.plan is None else steps_of(result.plan)
+    from strips_framework.grounding import ground
+
+    task = ground(pddl)
+    found = planner.solve_task(task) if macrops is None else solve_with_macros(planner, task, macrops)
+    return problem, found, None if found.plan is None else parse_plan(problem, found.plan)
+
+
+def _figures(result: SearchResult | ForwardResult) -> tuple[int, float, int]:
+    """Nodes (forward search: expansions), seconds, and MACROPs on the solution path."""
+    from strips_framework.search.forward.result import ForwardResult
+
+    if isinstance(result, ForwardResult):
+        return result.statistics.expanded, result.statistics.search_seconds, 0
+    used = sum(1 for node in result.solution_path()
+               if node.applied is not None and len(node.applied.steps()) > 1)
+    return result.statistics.nodes, result.statistics.seconds, used
 
 
 def learn_sequence(
@@ -112,15 +131,7 @@ def learn_sequence(
     lessons = []
     for domain, path in problems:
         problem, result, steps = solve_with(planner, path, library, domain)
-        statistics = result.statistics
-        nodes = getattr(statistics, "nodes", None)
-        if nodes is None:
-            nodes = statistics.expanded
-        seconds = getattr(statistics, "seconds", None)
-        if seconds is None:
-            seconds = statistics.search_seconds
-        used = sum(1 for node in getattr(result, "nodes", ()) if node.applied is not None
-                   and len(node.applied.steps()) > 1 and node in result.solution_path())
+        nodes, seconds, used = _figures(result)
         if steps is None:
             note = "not solved: nothing learned"
         else:
