@@ -32,10 +32,11 @@ MACRO_PREFIX = "(macrop "
 
 
 def with_macros(
-    task: GroundTask, library: Library, per_macrop: int = 500
+    task: GroundTask, library: Library, per_macrop: int = 500, effort: int = 50000
 ) -> tuple[GroundTask, dict[str, tuple[str, ...]]]:
-    """The task with up to ``per_macrop`` ground instances of each MACROP added, and for
-    each added operator's name the names of its steps."""
+    """The task with up to ``per_macrop`` ground instances of each MACROP added (found
+    within ``effort`` candidate steps), and for each added operator's name the names of
+    its steps."""
     if task.axioms or any(op.pre_neg for op in task.operators):
         raise MacroError(
             f"{task.name}: MACROPs as macro operators need a STRIPS task without derived "
@@ -49,7 +50,7 @@ def with_macros(
     steps_of: dict[str, tuple[str, ...]] = {}
     for macrop in library.macrops:
         count = 0
-        for chosen in _instances(macrop.table, by_name):
+        for chosen in _instances(macrop.table, by_name, effort):
             composed = _compose(chosen)
             if composed is None:
                 continue
@@ -81,25 +82,36 @@ def expand(plan: Sequence[str], steps_of: dict[str, tuple[str, ...]]) -> list[st
 
 
 def _instances(
-    table: TriangleTable, by_name: dict[str, list[tuple[tuple[str, ...], GroundOperator]]]
+    table: TriangleTable,
+    by_name: dict[str, list[tuple[tuple[str, ...], GroundOperator]]],
+    effort: int,
 ) -> Iterator[list[GroundOperator]]:
     """Ground operators for the table's steps, one binding of its parameters for all,
-    with its Distinct constraints kept."""
+    with its Distinct constraints kept, and no step needing what an earlier one deleted;
+    at most ``effort`` candidate steps are tried (long MACROPs over many objects have
+    more partial instances than any search could use)."""
+    budget = [effort]
 
-    def extend(index: int, binding: dict[Param, Term], chosen: list[GroundOperator]):
+    def extend(index: int, binding: dict[Param, Term], chosen: list[GroundOperator],
+               lost: frozenset[int]) -> Iterator[list[GroundOperator]]:
         if index == table.size:
             if all(d.holds(binding) for d in table.distinct):
                 yield list(chosen)
             return
         step = table.steps[index]
         for args, op in by_name.get(step.schema.name.lower(), ()):
+            budget[0] -= 1
+            if budget[0] < 0:
+                return
             bound = _match(step.arguments, args, binding)
-            if bound is not None:
-                chosen.append(op)
-                yield from extend(index + 1, bound, chosen)
-                chosen.pop()
+            if bound is None or lost.intersection(op.pre):
+                continue
+            chosen.append(op)
+            yield from extend(index + 1, bound, chosen,
+                              (lost | frozenset(op.delete)) - frozenset(op.add))
+            chosen.pop()
 
-    yield from extend(0, {}, [])
+    yield from extend(0, {}, [], frozenset())
 
 
 def _match(pattern: Sequence[Term], values: tuple[str, ...], binding: dict) -> dict | None:

@@ -26,10 +26,12 @@ def instances(
     closed: State,
     constants: Sequence[str],
     binding: Binding | None = None,
+    effort: int = 20000,
 ) -> Iterator[Binding]:
     """Every binding of the parameters of kernel ``i`` (extending ``binding``) under
-    which its clauses are in ``closed`` and its :class:`Distinct` constraints hold.
-    Parameters of steps i .. n that the kernel leaves open range over ``constants``."""
+    which its clauses are in ``closed`` and its :class:`Distinct` constraints hold, as
+    far as ``effort`` attempts to match a clause against a fact go. Parameters of steps
+    i .. n that the kernel leaves open range over ``constants``."""
     atoms = [substitute(a, binding or {}) for a in table.kernel(i)]
     by_predicate: dict[tuple[str, int], list[Atom]] = defaultdict(list)
     for atom in sorted(closed, key=repr):  # a fixed order: searches are reproducible
@@ -38,7 +40,7 @@ def instances(
     open_params = [
         p for step in table.steps[i - 1:] for p in _params(step.arguments)
     ]
-    for env in _join(atoms, by_predicate, dict(binding or {})):
+    for env in _join(atoms, by_predicate, dict(binding or {}), [effort]):
         rest = [p for p in dict.fromkeys(open_params) if p not in env]
         for values in itertools.product(constants, repeat=len(rest)):
             full = {**env, **dict(zip(rest, values))}
@@ -83,9 +85,11 @@ def _params(terms: Sequence[Term]) -> Iterator[Param]:
 
 
 def _join(
-    atoms: list[Atom], facts: dict[tuple[str, int], list[Atom]], env: dict
+    atoms: list[Atom], facts: dict[tuple[str, int], list[Atom]], env: dict, budget: list[int]
 ) -> Iterator[dict]:
-    """Bindings under which every atom is a fact: most bound atom first."""
+    """Bindings under which every atom is a fact, most bound atom first; gives up when
+    ``budget[0]`` match attempts are spent (a long kernel that nearly holds can otherwise
+    take exponential time to refute)."""
     if not atoms:
         yield env
         return
@@ -93,10 +97,12 @@ def _join(
     index = min(range(len(pending)), key=lambda k: len(list(_params(pending[k][1:]))))
     first, rest = pending[index], pending[:index] + pending[index + 1:]
     for fact in facts.get((first[0], len(first)), ()):
+        budget[0] -= 1
+        if budget[0] < 0:
+            return
         extended = match_pattern(first, fact, dict(env))
         if extended is not None:
-            yield from _join(rest, facts, extended)
-
+            yield from _join(rest, facts, extended, budget)
 
 
 def counterexamples(

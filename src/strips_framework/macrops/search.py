@@ -157,27 +157,30 @@ class MacroRelevance:
 def _cover(
     schema: MacroSchema, binding: dict[Param, Term], resolvent: Clause
 ) -> tuple[dict[Param, Term], Clause]:
-    """Bind more of the MACROP's parameters so that its goal row resolves away as many
-    further literals of the difference clause as it can (a MACROP is worth most where
-    it achieves several conjuncts of a goal at once); the binding and what is left."""
-    literals = [lit for lit in resolvent.literals if not lit[0]]
-    best: tuple[int, dict[Param, Term], frozenset[int]] = (0, binding, frozenset())
+    """Bind more of the MACROP's parameters so that its goal row resolves away further
+    literals of the difference clause (a MACROP is worth most where it achieves several
+    conjuncts of a goal at once): greedily, literal by literal, the first goal-row atom
+    that unifies without breaking a Distinct constraint. The binding and what is left."""
+    assert schema.table is not None
+    current = dict(binding)
+    rest = []
+    for literal in resolvent.literals:
+        positive, target = literal
+        extended = None if positive else _resolving(schema, current, target)
+        if extended is None:
+            rest.append(literal)
+        else:
+            current = extended
+    return current, Clause(rest, resolvent.bindings, label=resolvent.label)
 
-    def extend(start: int, current: dict[Param, Term], covered: frozenset[int]) -> None:
-        nonlocal best
-        if len(covered) > best[0] and all(d.holds(current) for d in schema.table.distinct):
-            best = (len(covered), current, covered)
-        for index in range(start, len(literals)):
-            target = literals[index][1]
-            for atom in schema.add_list:
-                unifier = unify(substitute(atom, current), target, {})
-                if unifier is None or any(type(k) is not Param or not is_ground(v)
-                                          for k, v in unifier.items()):
-                    continue
-                extend(index + 1, {**current, **unifier}, covered | {index})
 
-    extend(0, binding, frozenset())
-    _, chosen, covered = best
-    dropped = {literals[i] for i in covered}
-    rest = [lit for lit in resolvent.literals if lit not in dropped]
-    return chosen, Clause(rest, resolvent.bindings, label=resolvent.label)
+def _resolving(schema: MacroSchema, binding: dict[Param, Term], target: Term) -> dict | None:
+    for atom in schema.add_list:
+        unifier = unify(substitute(atom, binding), target, {})
+        if unifier is None or any(type(k) is not Param or not is_ground(v)
+                                  for k, v in unifier.items()):
+            continue
+        extended = {**binding, **unifier}
+        if all(d.holds(extended) for d in schema.table.distinct):
+            return extended
+    return None
