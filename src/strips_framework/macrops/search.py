@@ -2,12 +2,14 @@
 
 Each MACROP enters the search as macro operators: the whole table and each of its edited
 parts (:meth:`Macrop.parts`), as a :class:`MacroSchema` whose precondition is the part's
-kernel 1 (its column-0 clauses, and its :class:`Distinct` constraints as inequalities)
-and whose add list is its goal row. The relevance filter of the config then finds a
-MACROP relevant exactly as it finds an operator: when the add list of one of its
-operators (the last of an edited part) continues the uncompleted proof. The search pushes
-the part's precondition as a subgoal and, once it is proved, applies the part's steps one
-after another: one node for the whole sequence, all of its steps in the plan.
+kernel 1 (its column-0 clauses; its :class:`Distinct` constraints are tested on bindings,
+see :meth:`MacroInstance.admits`) and whose add list is its goal row. The relevance
+filter of the config then finds a MACROP relevant exactly as it finds an operator: when
+the add list of one of its operators (the last of an edited part) continues the
+uncompleted proof. :class:`MacroRelevance` offers it in instances whose kernel holds in
+the node's model (and, with ``[macrops] subgoals``, with its kernel as a subgoal); once
+its precondition is proved the search applies the steps one after another: one node for
+the whole sequence, all of its steps in the plan.
 """
 
 from __future__ import annotations
@@ -18,8 +20,8 @@ from typing import ClassVar
 
 from attrs import field, frozen, validators
 
-from strips_framework.logic.formulas import And, Atomic, Formula
 from strips_framework.logic.clauses import Clause
+from strips_framework.logic.formulas import And, Atomic, Formula
 from strips_framework.logic.terms import Param, Term, is_ground
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.macrops.kernels import instances
@@ -41,6 +43,8 @@ class MacroSchema(OperatorSchema):
 
 
 def macro_schema(name: str, table: TriangleTable) -> MacroSchema:
+    """The table as an operator: kernel 1 as precondition, the goal row as add list,
+    and every step's delete patterns (which the relevance filter ranks by harm)."""
     conditions: list[Formula] = [Atomic(a) for a in table.kernel(1)]
     deletes = {
         pattern for step in table.steps for pattern in step.deletes() if pattern != WILDCARD
