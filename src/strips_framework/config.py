@@ -26,6 +26,7 @@
     [macrops]        # how 'solve --macrops' uses a library
     instances = 3    # instances offered per relevant MACROP whose kernel holds
     subgoals = false # also offer MACROPs whose kernel does not hold, as subgoals
+    effort = 2000    # clause-against-fact matches per kernel looked for
 
     [execution]      # PLANEX's simulated world ('strips execute')
     failure = 0.1    # chance that an action has no effect

@@ -100,7 +100,9 @@ class MacroUse:
     """The ``[macrops]`` table of the config: how a search uses a library.
 
     A MACROP found relevant is offered in the instances (at most ``instances`` of them)
-    whose kernel 1 holds in the node's world model, so applying it is one proof away.
+    whose kernel 1 holds in the node's world model, so applying it is one proof away;
+    ``effort`` bounds the attempts to match a kernel clause against a fact while looking
+    for them (every node pays it for every relevant MACROP part).
     With ``subgoals`` one whose kernel does not hold is also offered, after the operators,
     with its precondition as the subgoal (the 1972 paper's full use). That costs dearly
     here: a kernel is a conjunction of many clauses, and a failed proof of it leaves a
@@ -110,6 +112,7 @@ class MacroUse:
 
     instances: int = field(default=3, validator=[validators.instance_of(int), validators.ge(1)])
     subgoals: bool = field(default=False, validator=validators.instance_of(bool))
+    effort: int = field(default=2000, validator=[validators.instance_of(int), validators.ge(1)])
 
 
 @frozen
@@ -145,7 +148,8 @@ class MacroRelevance:
                 facts = frozenset(model.facts())
             partial, resolvent = _cover(schema, item.operator.binding_map(), item.resolvent)
             size = len(resolvent.literals)
-            held = itertools.islice(instances(schema.table, 1, facts, (), partial), self.use.instances)
+            found_here = instances(schema.table, 1, facts, (), partial, self.use.effort)
+            held = itertools.islice(found_here, self.use.instances)
             offered = False
             for binding in held:
                 offered = True
