@@ -58,7 +58,7 @@ def test_macro_operators_compose_their_steps_exactly(tmp_path):
 def test_forward_search_with_the_library_gives_a_valid_plan(tmp_path):
     library = _library(tmp_path)
     planner = Planner.create(Config.from_dict(FORWARD).for_pddl())
-    result = planner.run(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl", library)
+    result = planner.run(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl", library=library)
     assert result.solved
     assert not any(step.startswith("(macrop") for step in result.plan)
     assert result.cost == len(result.plan)
@@ -70,7 +70,7 @@ def test_means_ends_uses_a_library_learned_from_forward_search(tmp_path):
     library = _library(tmp_path)
     planner = Planner.create(Config.from_dict({"strategy": "means-ends"}))
     without = planner.run(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl")
-    with_library = planner.run(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl", library)
+    with_library = planner.run(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl", library=library)
     assert with_library.solved
     assert with_library.statistics.nodes < without.statistics.nodes
 
