@@ -60,3 +60,10 @@ def strips_register_ground_strategies() -> list[type]:
         EnforcedHillClimbing,
         BreadthFirstSearch,
     ]
+
+
+@hookimpl
+def strips_register_macro_learners() -> list[type]:
+    from strips_framework.macrops.learning import TriangleTableLearner
+
+    return [TriangleTableLearner]

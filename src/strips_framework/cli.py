@@ -15,6 +15,7 @@ import attrs
 from strips_framework import __version__, exit_codes, report
 from strips_framework.bench import command as bench_command
 from strips_framework.config import Choice, Config
+from strips_framework.macrops import command as macrop_command
 from strips_framework.errors import StripsError
 from strips_framework.ipc import plan_text, read_plan
 from strips_framework.planner import Planner, is_pddl
@@ -51,6 +52,8 @@ def _parser() -> argparse.ArgumentParser:
     solve.add_argument("--plan-file", type=Path, help="also write the plan here, IPC style")
     solve.add_argument("--json", action="store_true", help="print the result as JSON")
     solve.add_argument("--tree", type=Path, help="write the search tree as Graphviz DOT")
+    solve.add_argument("--macrops", type=Path, metavar="LIBRARY",
+                       help="use the MACROPs of this library (see 'strips learn')")
 
     prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
     prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
@@ -75,6 +78,7 @@ def _parser() -> argparse.ArgumentParser:
     )
 
     bench_command.add_parser(commands)
+    macrop_command.add_parsers(commands)
 
     commands.add_parser("plugins", help="list the registered implementations and options")
     return parser
@@ -113,6 +117,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _prove(planner, args)
         if args.command == "validate":
             return _validate(planner, args)
+        if args.command in MACROP_COMMANDS:
+            return MACROP_COMMANDS[args.command](planner, args)
         return _plugins(planner)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
@@ -137,6 +143,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         return exit_codes.PLUGIN_ERROR
 
 
+MACROP_COMMANDS = {
+    "learn": macrop_command.learn,
+    "table": macrop_command.table,
+    "execute": macrop_command.execute_command,
+}
+
+
 def _domain_and_problem(files: list[Path], command: str, rest: int = 0) -> tuple[Path | None, Path]:
     """``[DOMAIN] PROBLEM`` from the positional arguments (``rest`` more follow them)."""
     if not 1 <= len(files) - rest <= 2:
@@ -158,7 +171,7 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     progress = Progress(sys.stderr) if sys.stderr.isatty() else None
     try:
         with enforced(planner.config.limits), progress or contextlib.nullcontext():
-            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock)
+            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock, args.macrops)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
         status = limit.status
     except MemoryError:

@@ -13,12 +13,25 @@
     [heuristic]                  # for the strategies over ground tasks (PDDL)
     name = "ff"
 
+    [learner]                    # for 'strips learn' (MACROPs)
+    name = "triangle-table"
+
     [limits]
     time = 60        # wall-clock seconds
     nodes = 10000    # nodes generated (world-model strategies)
     effort = 300     # prover effort per proof attempt
     expansions = 100000   # states expanded (forward strategies); unlimited if absent
     memory = 4096    # MiB (forward strategies and the CLI); unlimited if absent
+
+    [macrops]        # how 'solve --macrops' uses a library
+    instances = 3    # instances offered per relevant MACROP whose kernel holds
+    subgoals = false # also offer MACROPs whose kernel does not hold, as subgoals
+    effort = 2000    # clause-against-fact matches per kernel looked for
+
+    [execution]      # PLANEX's simulated world ('strips execute')
+    failure = 0.1    # chance that an action has no effect
+    disturbance = 0.05   # chance that the world changes after a step
+    seed = 0
 
 Every table is optional; missing ones take the defaults in :data:`DEFAULT_CHOICES`.
 Mistakes are reported with their key path and what was expected.
@@ -37,7 +50,9 @@ from strips_framework.user_files import read_toml
 from strips_framework.plugins import KINDS, Registration, Registry
 from strips_framework.search.limits import Limits
 
-COMPONENTS = ("strategy", "prover", "difference", "relevance", "evaluator", "heuristic")
+COMPONENTS = (
+    "strategy", "prover", "difference", "relevance", "evaluator", "heuristic", "learner"
+)
 DEFAULT_CHOICES = {
     "strategy": "means-ends",
     "prover": "resolution",
@@ -45,7 +60,12 @@ DEFAULT_CHOICES = {
     "relevance": "add-list",
     "evaluator": "paper",
     "heuristic": "ff",
+    "learner": "triangle-table",
 }
+#: Tables that configure a use rather than a component: ``[execution]`` is PLANEX's fault
+#: model (``strips execute``, :mod:`strips_framework.macrops.planex`), ``[macrops]`` how a
+#: search uses a MACROP library (:class:`strips_framework.macrops.search.MacroUse`).
+SECTIONS = ("execution", "macrops")
 #: The strategy PDDL input gets when the config names none: what Fast Downward's users
 #: expect of ``strips solve DOMAIN PROBLEM`` (lazy greedy search with hFF).
 PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
@@ -70,6 +90,8 @@ class Config:
     source: str = "<defaults>"
     #: The kinds the config file chose itself (the others took their defaults).
     chosen: frozenset[str] = frozenset()
+    #: The tables of :data:`SECTIONS`, as written (read by the commands that use them).
+    sections: dict[str, dict[str, Any]] = attrs.field(factory=dict)
 
     @classmethod
     def default(cls) -> Config:
@@ -81,7 +103,7 @@ class Config:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], source: str = "<config>") -> Config:
-        known = (*COMPONENTS, "limits")
+        known = (*COMPONENTS, "limits", *SECTIONS)
         for key in data:
             if key not in known:
                 raise ConfigError(
@@ -106,7 +128,14 @@ class Config:
         if not isinstance(limits_table, dict):
             raise ConfigError(f"{source}: 'limits' must be a table, got {_type_name(limits_table)}")
         limits = _instantiate(Limits, limits_table, "limits", source)
-        return cls(choices, limits, source, frozenset(kind for kind in COMPONENTS if kind in data))
+        sections = {}
+        for key in SECTIONS:
+            table = data.get(key, {})
+            if not isinstance(table, dict):
+                raise ConfigError(f"{source}: '{key}' must be a table, got {_type_name(table)}")
+            sections[key] = table
+        chosen = frozenset(kind for kind in COMPONENTS if kind in data)
+        return cls(choices, limits, source, chosen, sections)
 
     def for_pddl(self) -> Config:
         """This config for PDDL input: the strategy defaults to :data:`PDDL_DEFAULT_STRATEGY`
@@ -144,6 +173,11 @@ class Config:
                 f"(available: {available}); 'strips plugins' lists them"
             )
         return "strategy"
+
+    def section(self, cls: type, key: str) -> Any:
+        """``cls`` built from the ``[key]`` table (one of :data:`SECTIONS`), with wrong keys
+        and values reported by key path."""
+        return _instantiate(cls, self.sections.get(key, {}), key, self.source)
 
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""

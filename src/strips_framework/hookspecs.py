@@ -20,6 +20,7 @@ import pluggy
 
 if TYPE_CHECKING:
     from strips_framework.formats import ProblemLoader
+    from strips_framework.macrops.learning import MacroLearner
     from strips_framework.proving import TheoremProver
     from strips_framework.search.components import (
         DifferenceExtractor,
@@ -125,4 +126,16 @@ def strips_register_loaders() -> list[type[ProblemLoader]]:
     A loader reads files with the suffixes it declares in ``suffixes`` and returns a
     :class:`~strips_framework.problem.Problem`; on bad input it raises
     :class:`~strips_framework.errors.InputError` naming the file, line and what was expected.
+    """
+
+
+@hookspec
+def strips_register_macro_learners() -> list[type[MacroLearner]]:
+    """Return macro-learner classes.
+
+    A macro learner turns a solved problem and its plan into a MACROP library with what
+    it learned (Fikes, Hart & Nilsson 1972): ``learn(problem, steps, library)`` returns
+    the new :class:`~strips_framework.macrops.macrop.Library` and a line saying what
+    happened. ``strips learn`` calls it after each problem of a sequence; the builtin
+    ``triangle-table`` learner generalizes the plan's triangle table.
     """

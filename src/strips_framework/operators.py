@@ -61,6 +61,16 @@ class OperatorInstance:
         adds = tuple(substitute(a, bound) for a in self.schema.add_list)
         return deletes, adds
 
+    def steps(self) -> tuple[OperatorInstance, ...]:
+        """The primitive instances this one stands for in a plan: itself (an instance of
+        a MACROP stands for the steps of its triangle table)."""
+        return (self,)
+
+    def admits(self) -> bool:
+        """Whether the operator allows this binding once its precondition is proved (a
+        MACROP forbids bindings under which one of its steps would undo another's work)."""
+        return True
+
     def apply(self, model: WorldModel) -> WorldModel:
         """The world model after this (ground) instance: delete, then add."""
         if not self.is_ground:

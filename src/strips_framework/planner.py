@@ -28,6 +28,7 @@ from strips_framework.search.limits import Clock
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
+    from strips_framework.macrops.macrop import Library
     from strips_framework.pddl import PddlTask
     from strips_framework.problem import Problem
     from strips_framework.progress import Progress
@@ -127,22 +128,30 @@ class Planner:
         problem_path: Path | str,
         domain_path: Path | str | None = None,
         clock: Clock | None = None,
+        library: Path | None = None,
     ) -> Result:
         """Read the problem (PDDL when it ends in ``.pddl`` or a domain is given) and
         solve it, with the defaults of ``strips solve``: PDDL input gets lazy greedy
         search unless the config names a strategy. The time limit counts from the start
-        of ``clock`` (default: now)."""
+        of ``clock`` (default: now). With a MACROP ``library`` file, the search also uses
+        its MACROPs (forward strategies as macro operators, see
+        :mod:`strips_framework.macrops.forward`)."""
         clock = clock or Clock(self.config.limits.time)
         problem_path = Path(problem_path)
         domain_path = None if domain_path is None else Path(domain_path)
         if not is_pddl(problem_path, domain_path):
             self._require_world_model(problem_path)
-            return self.solve(self.load(problem_path), clock)
+            problem = self.load(problem_path)
+            return self.solve(problem, clock, _read_library(library, problem))
         pddl = self.load_pddl(problem_path, domain_path)
-        return self.for_pddl().solve_pddl(pddl, clock, parse_seconds=clock.elapsed())
+        return self.for_pddl().solve_pddl(pddl, clock, parse_seconds=clock.elapsed(), library=library)
 
     def solve_pddl(
-        self, pddl: PddlTask, clock: Clock | None = None, parse_seconds: float = 0.0
+        self,
+        pddl: PddlTask,
+        clock: Clock | None = None,
+        parse_seconds: float = 0.0,
+        library: Path | None = None,
     ) -> Result:
         """Solve a PDDL task with the configured strategy: a ground-task strategy searches
         it grounded, a world-model strategy its translation to a :class:`Problem`.
@@ -151,13 +160,21 @@ class Planner:
         if not self.searches_ground_tasks:
             from strips_framework.pddl import to_problem
 
-            return self.solve(to_problem(pddl), clock)
+            problem = to_problem(pddl)
+            return self.solve(problem, clock, _read_library(library, problem))
         from strips_framework.grounding import ground
 
         grounding_since = clock.elapsed()
         task = ground(pddl)
         searching_since = clock.elapsed()
-        result = self.solve_task(task, clock)
+        if library is None:
+            result = self.solve_task(task, clock)
+        else:
+            from strips_framework.macrops.forward import solve_with_macros
+            from strips_framework.pddl import to_problem
+
+            macrops = _read_library(library, to_problem(pddl))
+            result = solve_with_macros(self, task, macrops, clock)
         statistics = attrs.evolve(
             result.statistics,
             parse_seconds=parse_seconds,
@@ -166,20 +183,29 @@ class Planner:
         )
         return attrs.evolve(result, statistics=statistics, seconds=clock.elapsed())
 
-    def solve(self, problem: Problem, clock: Clock | None = None) -> Result:
+    def solve(
+        self, problem: Problem, clock: Clock | None = None, library: Library | None = None
+    ) -> Result:
         """Search for a plan with the strategy, prover, difference extractor, relevance
         filter and evaluator of the config (a world-model strategy; after checking that
-        the prover handles what the problem uses)."""
+        the prover handles what the problem uses). With a MACROP ``library`` the relevance
+        filter also offers its MACROPs (see :mod:`strips_framework.macrops.search`)."""
         self._require_world_model(problem.source)
         check_problem(problem, self.registry, self.config)
         build = self.config.build
         strategy = build(self.registry, "strategy")
         evaluator = build(self.registry, "evaluator")
+        relevance = build(self.registry, "relevance")
+        if library is not None:
+            from strips_framework.macrops.search import MacroRelevance, MacroUse
+
+            use = self.config.section(MacroUse, "macrops")
+            relevance = MacroRelevance.of(relevance, library, use)
         return strategy.search(
             problem,
             build(self.registry, "prover"),
             build(self.registry, "difference"),
-            build(self.registry, "relevance"),
+            relevance,
             evaluator if self.progress is None else self.progress.evaluator(evaluator),
             self.config.limits,
             clock or Clock(self.config.limits.time),
@@ -209,6 +235,14 @@ class Planner:
                 "native problem (first-order world models and axioms): use a world-model "
                 "strategy such as 'means-ends' or 'model-astar'"
             )
+
+
+def _read_library(path: Path | None, problem: Problem) -> Library | None:
+    if path is None:
+        return None
+    from strips_framework.macrops.library_file import read_library
+
+    return read_library(path, problem)
 
 
 def is_pddl(problem_path: Path, domain_path: Path | None = None) -> bool:

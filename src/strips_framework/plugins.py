@@ -43,6 +43,7 @@ KINDS = {
     "evaluator": ("strips_register_evaluators", "evaluator", "evaluators"),
     "heuristic": ("strips_register_heuristics", "state heuristic", "state heuristics"),
     "loader": ("strips_register_loaders", "problem loader", "problem loaders"),
+    "learner": ("strips_register_macro_learners", "macro learner", "macro learners"),
 }
 
 #: Distributions known to provide implementations, for the hint in "not registered" errors.

@@ -120,7 +120,7 @@ class Simulator:
         state: State = frozenset(self.problem.facts)
         for index, text in enumerate(plan):
             where = f"step {index + 1} of {len(plan)}"
-            step = self._parse(text)
+            step = self.parse_step(text)
             if isinstance(step, str):
                 return Replay(False, index, f"{where}, {text.strip()!r}: {step}")
             schema, binding = step
@@ -143,7 +143,7 @@ class Simulator:
                 )
         return Replay(True, None, f"valid plan of {len(plan)} steps: the goal holds at the end")
 
-    def _parse(self, text: str) -> tuple[OperatorSchema, dict[Param, Term]] | str:
+    def parse_step(self, text: str) -> tuple[OperatorSchema, dict[Param, Term]] | str:
         """The schema and parameter binding a step names, or why it names none."""
         words = split_step(text)
         if words is None:
@@ -176,11 +176,11 @@ class Simulator:
         while changed:
             changed = False
             for rule in self.rules:
-                for env in list(_body_matches(rule.body, by_predicate, {})):
+                for env in list(body_matches(rule.body, by_predicate, {})):
                     for values in itertools.product(self.problem.constants, repeat=len(rule.free)):
                         full = {**env, **dict(zip(rule.free, values))}
                         for atom in rule.head:
-                            grounded = _ground(atom, full)
+                            grounded = ground_term(atom, full)
                             if grounded not in facts:
                                 facts.add(grounded)
                                 by_predicate[grounded[0], len(grounded)].add(grounded)
@@ -195,7 +195,7 @@ class Simulator:
     def holds(self, formula: Formula, env: Env, state: State) -> bool:
         """Whether ``formula`` is true in ``state`` under the closed world."""
         if isinstance(formula, Atomic):
-            atom = _ground(formula.atom, env)
+            atom = ground_term(formula.atom, env)
             if atom[0] == EQUALITY:
                 if not self.problem.unique_names:
                     raise SimulationError(
@@ -235,20 +235,20 @@ def _conjuncts(formula: Formula) -> Iterator[Formula]:
         yield formula
 
 
-def _ground(term: Term | Var, env: Env) -> Term:
+def ground_term(term: Term | Var, env: Env) -> Term:
     """``term`` with variables and parameters replaced by their values in ``env``."""
     if isinstance(term, (Var, Param)):
         return env.get(term, term)
     if type(term) is tuple:
-        return (term[0], *(_ground(arg, env) for arg in term[1:]))
+        return (term[0], *(ground_term(arg, env) for arg in term[1:]))
     return term
 
 
 def _apply(schema: OperatorSchema, binding: Env, state: State) -> State:
     """Delete every atom a delete-list pattern matches, then add the add list."""
-    patterns = [_ground(atom, binding) for atom in schema.delete_list]
+    patterns = [ground_term(atom, binding) for atom in schema.delete_list]
     kept = {atom for atom in state if not any(_matches(p, atom) for p in patterns)}
-    return frozenset(kept | {_ground(atom, binding) for atom in schema.add_list})
+    return frozenset(kept | {ground_term(atom, binding) for atom in schema.add_list})
 
 
 def _matches(pattern: Term, term: Term) -> bool:
@@ -283,7 +283,7 @@ def match_pattern(pattern: Term | Var, term: Term, env: dict) -> dict | None:
     return env if pattern == term else None
 
 
-def _body_matches(
+def body_matches(
     body: tuple[Atom, ...], facts: Mapping[tuple[str, int], set[Atom]], env: dict
 ) -> Iterator[dict]:
     """Every assignment of the body's variables under which all its atoms are facts."""
@@ -294,7 +294,7 @@ def _body_matches(
     for fact in facts.get((first[0], len(first)), ()):
         extended = match_pattern(first, fact, env)
         if extended is not None:
-            yield from _body_matches(rest, facts, extended)
+            yield from body_matches(rest, facts, extended)
 
 
 def _horn_rule(number: int, axiom: Formula) -> _Rule:

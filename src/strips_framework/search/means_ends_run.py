@@ -99,10 +99,10 @@ class MeansEndsRun:
             if first.operator is None:
                 return node
             operator = first.operator.bind(dict(result.answers[0]))
-            if not operator.is_ground:
-                return None  # the proof left a parameter of the effects unbound
+            if not operator.is_ground or not operator.admits():
+                return None  # a parameter of the effects left unbound, or a binding refused
             model, goals, parent = operator.apply(model), goals[1:], node
-            plan, applied = (*plan, operator), operator
+            plan, applied = (*plan, *operator.steps()), operator
 
     def _set_difference(self, node: Node, result: ProofResult) -> None:
         negated = self.goal_prover.negated(node.goals[0].formula)

@@ -108,7 +108,7 @@ class ModelAStarSearch:
                     if best_cost.get(model, node.cost + 2) <= node.cost + 1:
                         continue
                     best_cost[model] = node.cost + 1
-                    child = make(model, node, (*node.plan, instance), instance)
+                    child = make(model, node, (*node.plan, *instance.steps()), instance)
                     heapq.heappush(queue, (evaluator.evaluate(child), next(counter), child))
         except LimitReached as limit:
             return tree.result(limit.status, None)
