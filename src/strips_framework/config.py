@@ -116,13 +116,18 @@ class Config:
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""
         choice = self.choices[kind]
+        registration = self.registration(registry, kind)
+        return _instantiate(registration.cls, choice.options, kind, self.source, registration)
+
+    def registration(self, registry: Registry, kind: str) -> Registration:
+        """The registered implementation chosen for ``kind``; an unknown name chosen by
+        the config file is reported at its key."""
         try:
-            registration = registry.get(kind, choice.name)
+            return registry.get(kind, self.choices[kind].name)
         except PluginError as error:
             if kind not in self.chosen:
                 raise  # a default: no key of the config file to point at
             raise PluginError(f"{self.source}: '{kind}.name': {error}") from None
-        return _instantiate(registration.cls, choice.options, kind, self.source, registration)
 
 
 _NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",

@@ -64,7 +64,7 @@ class Planner:
     @property
     def searches_ground_tasks(self) -> bool:
         """True when the configured strategy searches ground tasks (PDDL input only)."""
-        strategy = self.registry.get("strategy", self.config.choices["strategy"].name)
+        strategy = self.config.registration(self.registry, "strategy")
         return getattr(strategy.cls, "works_on", "problem") == GROUND_TASK
 
     def load(self, path: Path) -> Problem:
