@@ -56,8 +56,9 @@ def main() -> int:
         outcomes = []
         for case in fuzz.cases(space, args.per_format, formats):
             outcomes.append(fuzz.run_case(space, case))
-            if len(outcomes) % 1000 == 0:
-                print(f"{len(outcomes)} inputs, {time.perf_counter() - started:.0f} s", file=sys.stderr)
+            if len(outcomes) % 1000 == 0:  # the table so far, for a run stopped early
+                print(f"{len(outcomes)} inputs, {time.perf_counter() - started:.0f} s\n"
+                      f"{fuzz.table(outcomes)}", file=sys.stderr)
         seconds = time.perf_counter() - started
     print(fuzz.table(outcomes))
     print(f"\n{len(outcomes)} inputs in {seconds:.0f} s ({len(outcomes) / seconds:.0f} per second)")

@@ -195,3 +195,12 @@ def test_the_config_is_checked_whole_not_only_the_parts_the_strategy_uses(tmp_pa
     assert main(["solve", *problem, "--config", str(config)]) == exit_codes.INPUT_ERROR
     err = capsys.readouterr().err
     assert err.startswith(f"strips: error: {config}: ") and message in err
+
+
+def test_an_unknown_strategy_names_the_config_and_key(tmp_path, capsys):
+    config = tmp_path / "strips.toml"
+    config.write_text('[strategy]\nname = "modl-astar"\n')
+    assert main(["solve", str(THREE_BOXES), "--config", str(config)]) == exit_codes.INPUT_ERROR
+    assert capsys.readouterr().err.startswith(
+        f"strips: error: {config}: 'strategy.name': search strategy 'modl-astar' is not registered"
+    )

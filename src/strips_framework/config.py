@@ -181,15 +181,20 @@ class Config:
 
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""
-        choice = self.choice(kind)
+        registration = self.registration(registry, kind)
+        table = self.table_of(kind)
+        return _instantiate(registration.cls, self.choice(kind).options, table, self.source, registration)
+
+    def registration(self, registry: Registry, kind: str) -> Registration:
+        """The registered implementation chosen for ``kind``; an unknown name chosen by
+        the config file is reported at its key."""
         table = self.table_of(kind)
         try:
-            registration = registry.get(kind, choice.name)
+            return registry.get(kind, self.choice(kind).name)
         except PluginError as error:
             if table not in self.chosen:
                 raise  # a default: no key of the config file to point at
             raise PluginError(f"{self.source}: '{table}.name': {error}") from None
-        return _instantiate(registration.cls, choice.options, table, self.source, registration)
 
 
 _NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
