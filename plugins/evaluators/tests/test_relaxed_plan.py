@@ -8,7 +8,7 @@ import pytest
 
 from strips_evaluators.relaxed_plan import RelaxedPlanEvaluator
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.formulas import And, Atomic, Formula, Not
+from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
 from strips_framework.logic.terms import Param
 from strips_framework.operators import OperatorInstance
 from strips_framework.problem import OperatorSchema
@@ -26,11 +26,17 @@ GO = OperatorSchema(
     [("AT", X)],
 )
 FACTS = [("AT", "A"), ("ROAD", "A", "B"), ("ROAD", "B", "C"), ("ROAD", "C", "C")]
-M0 = WorldModel(InitialModel([Clause([(True, fact)]) for fact in FACTS]))
 
 
-def _node(*goals: Goal, cost: int = 0, successors: int = 0) -> Node:
-    node = Node(id=0, model=M0, goals=goals, parent=None)
+def _model(facts: list[tuple]) -> WorldModel:
+    return WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts]))
+
+
+M0 = _model(FACTS)
+
+
+def _node(*goals: Goal, cost: int = 0, successors: int = 0, model: WorldModel = M0) -> Node:
+    node = Node(id=0, model=model, goals=goals, parent=None)
     node.plan = (OperatorInstance(GO, [(X, "A"), (Y, "B")]),) * cost
     node.successors_generated = successors
     return node
@@ -38,7 +44,7 @@ def _node(*goals: Goal, cost: int = 0, successors: int = 0) -> Node:
 
 def _score(node: Node, **options: object) -> float:
     evaluator = RelaxedPlanEvaluator(**options)  # type: ignore[arg-type]
-    return evaluator_for_problem(evaluator, [GO], M0.initial).evaluate(node)
+    return evaluator_for_problem(evaluator, [GO], node.model.initial).evaluate(node)
 
 
 def _goal(*atoms: tuple, operator: OperatorInstance | None = None) -> Goal:
@@ -72,6 +78,20 @@ def test_a_parameter_costs_its_cheapest_ground_atom() -> None:
     go_to_c = OperatorInstance(GO, [(Y, "C")])
     subgoal = Goal(go_to_c.precondition(), go_to_c)
     assert _score(_node(subgoal, _goal(("AT", "C")))) == 1 + 1
+
+
+def test_the_cheapest_binding_wins_wherever_it_comes() -> None:
+    """Roads A -> C <-> B. Grounding from AT(A) meets LIT(C) first; from AT(C), though,
+    LIT(C) costs two steps (there and back) and LIT(B) one."""
+    m0 = _model([("AT", "A"), ("ROAD", "A", "C"), ("ROAD", "C", "B"), ("ROAD", "B", "C")])
+    at_c = m0.changed(frozenset({("AT", "A")}), frozenset({("AT", "C")}))
+    assert _score(_node(_goal(("LIT", Param("z"))), model=at_c)) == 1
+
+
+def test_existential_variables_are_bound_like_parameters() -> None:
+    v = Var("v")
+    lit_somewhere = Goal(Exists([v], And([Atomic(("LIT", v)), Atomic(("ROAD", v, "C"))])))
+    assert _score(_node(lit_somewhere)) == 1
 
 
 def test_an_unreachable_goal_is_a_dead_end() -> None:

@@ -107,7 +107,7 @@ class _RelaxedTask:
         self.adds: list[tuple[int, ...]] = []
         self.needed_by: list[list[int]] = []
         self.free: set[tuple[str, int]] = set()
-        self.index = _FactIndex(set())
+        self.index = _FactIndex(())
 
     @classmethod
     def ground(cls, operators: Sequence[OperatorSchema], initial: InitialModel) -> _RelaxedTask:
@@ -117,7 +117,7 @@ class _RelaxedTask:
         facts = {atom for atom in initial.facts if is_ground(atom)}
         schemata = [(schema, _positive_atoms(schema.precondition)) for schema in operators]
         instances: dict[tuple[str, tuple], tuple[list[Atom], list[Atom]]] = {}
-        index = _FactIndex(facts)
+        index = _FactIndex(sorted(facts, key=repr))  # sorted: bindings in a fixed order
         grew = True
         while grew:  # naive fixpoint: rounds are as many as the relaxed plan's depth
             grew = False
@@ -241,7 +241,7 @@ class _RelaxedTask:
 class _FactIndex:
     """Ground facts by predicate and by (predicate, position, constant), for the joins."""
 
-    def __init__(self, facts: set[Atom]) -> None:
+    def __init__(self, facts: Sequence[Atom]) -> None:
         self.facts: set[Atom] = set()
         self._by_key: dict[tuple, list[Atom]] = defaultdict(list)
         for atom in facts:
