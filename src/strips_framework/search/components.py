@@ -56,6 +56,20 @@ class NodeEvaluator(Protocol):
         ...
 
 
+def evaluator_for_problem(
+    evaluator: NodeEvaluator, operators: Sequence[OperatorSchema], initial: InitialModel
+) -> NodeEvaluator:
+    """The evaluator a strategy scores one problem's nodes with.
+
+    Most evaluators score a node from the node alone and are used as they are. One that
+    needs the problem (a relaxed plan needs its operators and M0) defines
+    ``for_problem(operators, initial)``, like :meth:`RelevanceFilter.for_problem`, and the
+    evaluator it returns is prepared once per search.
+    """
+    prepare = getattr(evaluator, "for_problem", None)
+    return evaluator if prepare is None else prepare(operators, initial)
+
+
 class SearchStrategy(Protocol):
     """A world-model strategy (the ``strategy`` plugin kind)."""
 

@@ -13,6 +13,7 @@ from strips_framework.search.components import (
     DifferenceExtractor,
     NodeEvaluator,
     RelevanceFilter,
+    evaluator_for_problem,
 )
 from strips_framework.search.goal_prover import GoalProver
 from strips_framework.result import Result, Status
@@ -40,7 +41,7 @@ class MeansEndsRun:
         self.goal_prover = goal_prover
         self.differences = differences
         self.relevance = relevance.for_problem(problem.operators, goal_prover.initial)
-        self.evaluator = evaluator
+        self.evaluator = evaluator_for_problem(evaluator, problem.operators, goal_prover.initial)
         self.tree = SearchTree(limits, goal_prover, clock)
         self.queue: list[tuple[float, int, Node]] = []
         self.pushes = 0

@@ -67,6 +67,7 @@ class ModelAStarSearch:
     ) -> Result:
         # Imported here, not at the top, so that registering the strategy stays cheap.
         from strips_framework.result import Status
+        from strips_framework.search.components import evaluator_for_problem
         from strips_framework.search.goal_prover import GoalProver
         from strips_framework.search.limits import Clock, LimitReached
         from strips_framework.search.node import Goal
@@ -74,6 +75,7 @@ class ModelAStarSearch:
         goal_prover = GoalProver(problem, prover, limits.effort)
         tree = SearchTree(limits, goal_prover, clock or Clock(limits.time))
         top = (Goal(problem.goal),)
+        evaluator = evaluator_for_problem(evaluator, problem.operators, goal_prover.initial)
 
         def make(
             model: WorldModel,

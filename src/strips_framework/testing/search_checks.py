@@ -9,7 +9,7 @@ claims ``admissible``, compared with the true cost through each node, computed b
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from functools import cache
 from importlib import resources
 from pathlib import Path
@@ -25,12 +25,14 @@ from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.formulas import formula_to_str
 from strips_framework.planner import Planner
 from strips_framework.plugins import KINDS, Registry
-from strips_framework.problem import Problem
+from strips_framework.problem import OperatorSchema, Problem
+from strips_framework.search.components import evaluator_for_problem
 from strips_framework.search.node import Node
 from strips_framework.result import Result
 from strips_framework.simulate import replay
 from strips_framework.testing.declaration import ConformanceFailure
 from strips_framework.testing.optimum import StateSpace
+from strips_framework.world import InitialModel
 
 #: The kit's problems: the paper's 3-boxes task and two tasks in a small robot world
 #: (one needs ``$`` deletes and four steps, one needs quantified axioms to pass a door).
@@ -118,6 +120,12 @@ class ScoreRecorder:
     @property
     def admissible(self) -> bool:
         return bool(getattr(self.inner, "admissible", False))
+
+    def for_problem(
+        self, operators: Sequence[OperatorSchema], initial: InitialModel
+    ) -> ScoreRecorder:
+        """The inner evaluator prepared for the problem, recording into the same list."""
+        return ScoreRecorder(evaluator_for_problem(self.inner, operators, initial), self.scores)
 
     def evaluate(self, node: Node) -> float:
         score = self.inner.evaluate(node)

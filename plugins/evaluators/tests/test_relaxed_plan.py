@@ -1,0 +1,115 @@
+"""The relaxed-plan evaluator on a road of places A - B - C (and an unconnected D)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from strips_evaluators.relaxed_plan import RelaxedPlanEvaluator
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
+from strips_framework.logic.terms import Param
+from strips_framework.operators import OperatorInstance
+from strips_framework.problem import OperatorSchema
+from strips_framework.search.components import evaluator_for_problem
+from strips_framework.search.node import Goal, Node
+from strips_framework.world import InitialModel, WorldModel
+
+X, Y = Param("x"), Param("y")
+#: go(x, y): from x to a connected y; it also lights y (one achiever, two atoms).
+GO = OperatorSchema(
+    "go",
+    [X, Y],
+    And([Atomic(("AT", X)), Atomic(("ROAD", X, Y)), Not(Atomic(("=", X, Y)))]),
+    [("AT", Y), ("LIT", Y)],
+    [("AT", X)],
+)
+FACTS = [("AT", "A"), ("ROAD", "A", "B"), ("ROAD", "B", "C"), ("ROAD", "C", "C")]
+
+
+def _model(facts: list[tuple]) -> WorldModel:
+    return WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts]))
+
+
+M0 = _model(FACTS)
+
+
+def _node(*goals: Goal, cost: int = 0, successors: int = 0, model: WorldModel = M0) -> Node:
+    node = Node(id=0, model=model, goals=goals, parent=None)
+    node.plan = (OperatorInstance(GO, [(X, "A"), (Y, "B")]),) * cost
+    node.successors_generated = successors
+    return node
+
+
+def _score(node: Node, **options: object) -> float:
+    evaluator = RelaxedPlanEvaluator(**options)  # type: ignore[arg-type]
+    return evaluator_for_problem(evaluator, [GO], node.model.initial).evaluate(node)
+
+
+def _goal(*atoms: tuple, operator: OperatorInstance | None = None) -> Goal:
+    formula: Formula = And([Atomic(a) for a in atoms]) if len(atoms) > 1 else Atomic(atoms[0])
+    return Goal(formula, operator)
+
+
+def test_counts_the_relaxed_plan_to_the_top_goal() -> None:
+    assert _score(_node(_goal(("AT", "C")))) == 2
+    assert _score(_node(_goal(("AT", "C"))), estimate="add") == 2
+
+
+def test_ff_counts_a_shared_achiever_once_and_hadd_twice() -> None:
+    both = _node(_goal(("AT", "B"), ("LIT", "B")))
+    assert _score(both) == 1
+    assert _score(both, estimate="add") == 2
+
+
+def test_an_operator_on_the_goal_list_takes_over_what_it_adds() -> None:
+    """Subgoaling on go(B, C) keeps the score level: the operator now on the list adds
+    AT(C), so only its precondition AT(B) is left for the relaxed plan."""
+    go_bc = OperatorInstance(GO, [(X, "B"), (Y, "C")])
+    top = _goal(("AT", "C"))
+    subgoal = Goal(go_bc.precondition(), go_bc)
+    assert _score(_node(subgoal, top)) == 1 + 1 == _score(_node(top))
+
+
+def test_a_parameter_costs_its_cheapest_ground_atom() -> None:
+    """go(x, C) needs AT(x) & ROAD(x, C) together: x = B costs one step, x = C two
+    (AT(A) and ROAD(B, C) each cost nothing alone, but they do not share an x)."""
+    go_to_c = OperatorInstance(GO, [(Y, "C")])
+    subgoal = Goal(go_to_c.precondition(), go_to_c)
+    assert _score(_node(subgoal, _goal(("AT", "C")))) == 1 + 1
+
+
+def test_the_cheapest_binding_wins_wherever_it_comes() -> None:
+    """Roads A -> C <-> B. Grounding from AT(A) meets LIT(C) first; from AT(C), though,
+    LIT(C) costs two steps (there and back) and LIT(B) one."""
+    m0 = _model([("AT", "A"), ("ROAD", "A", "C"), ("ROAD", "C", "B"), ("ROAD", "B", "C")])
+    at_c = m0.changed(frozenset({("AT", "A")}), frozenset({("AT", "C")}))
+    assert _score(_node(_goal(("LIT", Param("z"))), model=at_c)) == 1
+
+
+def test_existential_variables_are_bound_like_parameters() -> None:
+    v = Var("v")
+    lit_somewhere = Goal(Exists([v], And([Atomic(("LIT", v)), Atomic(("ROAD", v, "C"))])))
+    assert _score(_node(lit_somewhere)) == 1
+
+
+def test_an_unreachable_goal_is_a_dead_end() -> None:
+    assert _score(_node(_goal(("AT", "D")))) == math.inf
+
+
+def test_inequality_is_decided_when_grounding() -> None:
+    """go(C, C) is excluded by x != y, so LIT(C) needs go(B, C) and LIT(A) is never made."""
+    assert _score(_node(_goal(("LIT", "C")))) == 2
+    assert _score(_node(_goal(("LIT", "A")))) == math.inf
+
+
+def test_cost_and_successors_are_weighted() -> None:
+    node = _node(_goal(("AT", "C")), cost=2, successors=3)
+    assert _score(node) == 2 + 0.5 * 2 + 1.0 * 3
+    assert _score(node, cost_weight=1.0, successor_weight=0.0) == 2 + 2
+
+
+def test_refuses_to_score_without_its_problem() -> None:
+    with pytest.raises(TypeError, match="for_problem"):
+        RelaxedPlanEvaluator().evaluate(_node(_goal(("AT", "C"))))
