@@ -27,6 +27,7 @@ from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
 from strips_resolution_prover.auto import prove_scheduled
 from strips_resolution_prover.completeness import incompleteness
+from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
@@ -105,6 +106,7 @@ class _Saturation:
         self.subsumption = SubsumptionIndex()
         self.processed: list[PClause] = []
         self.equational: list[PClause] = []
+        self.demodulators = Demodulators()
         self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
         self.answers: list[Answer] = []
         self.limits = Limits(options.max_weight)
@@ -192,6 +194,7 @@ class _Saturation:
         self.processed.append(clause)
         if any(pos and is_equality(atom) for pos, atom in clause.literals):
             self.equational.append(clause)
+            self.demodulators.add(clause)
         self.subsumption.add(clause, deletable=clause.sos or not self.options.set_of_support)
         for i in eligible(clause.literals, self.selecting):
             positive, atom = clause.literals[i]
@@ -247,10 +250,18 @@ class _Saturation:
         """Evaluate equalities and apply the size limits; ``None`` deletes the clause."""
         literals = clause.literals
         if self.uses_equality:
+            parents = clause.parents
+            if self.demodulators:
+                literals, used = self.demodulators.rewrite(literals)
+                if used:
+                    parents = (*parents, *used)
+                    literals = tuple(dict.fromkeys(literals))
+                    if any((not pos, atom) in literals for pos, atom in literals):
+                        return None  # rewriting made a tautology
             evaluated = evaluate(literals, self.task.unique_names)
             if evaluated is None:
                 return None
-            if evaluated is not literals:
+            if evaluated is not clause.literals:
                 numbering: dict[int, int] = {}
                 literals = tuple((pos, renumber(atom, numbering)) for pos, atom in evaluated)
                 clause = PClause(
@@ -258,7 +269,7 @@ class _Saturation:
                     len(numbering),
                     clause.bindings,
                     sos=clause.sos,
-                    parents=clause.parents,
+                    parents=parents,
                     label=clause.label,
                 )
         limit = self.options.max_clause_literals
