@@ -119,11 +119,7 @@ class _Saturation:
             for clause in (*task.axioms, *task.negated_goal)
             for _, atom in clause.literals
         )
-        self.names = (
-            names_of(lit for c in (*task.axioms, *task.negated_goal) for lit in c.literals)
-            if self.uses_equality and task.unique_names
-            else ()
-        )
+        self._names: tuple[str, ...] | None = None
 
     # -- the loop -----------------------------------------------------------------------
 
@@ -174,7 +170,7 @@ class _Saturation:
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
         for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
-        for clause in unique_name_instances(given, self.names, self.limits):
+        for clause in unique_name_instances(given, self._names_known, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
         partners = self.processed if has_equation else self.equational
@@ -182,6 +178,17 @@ class _Saturation:
             self._add_new(clause)
             if self._done():
                 return
+
+    def _names_known(self) -> tuple[str, ...]:
+        """The task's names under unique names (none without), found on first use."""
+        if self._names is None:
+            task = self.task
+            self._names = (
+                names_of(lit for c in (*task.axioms, *task.negated_goal) for lit in c.literals)
+                if task.unique_names
+                else ()
+            )
+        return self._names
 
     # -- clause bookkeeping ---------------------------------------------------------------
 
@@ -214,7 +221,7 @@ class _Saturation:
         # are their instances made false equations by unique names.
         derived = (
             *factors(simplified, self.limits),
-            *unique_name_instances(simplified, self.names, self.limits),
+            *unique_name_instances(simplified, self._names_known, self.limits),
         )
         for clause in derived:
             self._add_axiom(
