@@ -153,4 +153,4 @@ def test_strips_plugins_shows_capabilities_and_requirements(capsys):
     assert "      capabilities: none" in means_ends[:4]
     assert "      requires: prover with answers" in means_ends[:4]
     assert "requires: prover with answers; evaluator with admissible (soft: a warning if missing)" in out
-    assert "capabilities: answers, complete, effort-bound, equality, quantified-axioms, sound, uncompleted-proof" in out
+    assert "capabilities: answers, effort-bound, equality, quantified-axioms, sound, uncompleted-proof" in out

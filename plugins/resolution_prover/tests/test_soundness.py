@@ -15,6 +15,8 @@ from strips_framework.formats.tptp import parse_tptp, szs_status
 from strips_framework.logic.clauses import Clause
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED
 from strips_resolution_prover import ResolutionProver
+from strips_resolution_prover.demodulation import Demodulators
+from strips_resolution_prover.kbo import greater
 from strips_resolution_prover.pclause import PClause, from_clause
 from strips_resolution_prover.subsumption import subsumes
 
@@ -163,3 +165,27 @@ def test_unique_names_instantiate_equations(options: dict) -> None:
     contradiction = parse_tptp("fof(a, axiom, ![X]: X = a). fof(b, axiom, p(b)). "
                                "fof(c, conjecture, q).")  # fmt: skip
     assert prover.prove(contradiction.task(100, unique_names=True)).proved
+
+
+def test_kbo_orients_by_weight_then_precedence_and_never_against_variables() -> None:
+    assert greater(("f", ("g", 0)), 0) and not greater(0, ("f", 0))
+    assert greater(("f", "a", "b"), "a")
+    assert greater("b", "a") and not greater("a", "b")  # same weight: the precedence
+    assert not greater(("f", 0), ("g", 1)) and not greater(("g", 1), ("f", 0))  # x vs y
+    assert greater(("i", ("i", 0)), ("i", 0))
+
+
+def test_demodulation_rewrites_to_normal_form() -> None:
+    # f(f(x)) = x and g(a) = f(a): p(g(f(f(g(a))))) is rewritten to p(g(f(a))).
+    demodulators = Demodulators()
+    for clause in (_clause((True, ("=", ("f", ("f", 0)), 0))),
+                   _clause((True, ("=", ("g", "a"), ("f", "a"))))):  # fmt: skip
+        clause.id = 7
+        demodulators.add(clause)
+    literals, used = demodulators.rewrite(((True, ("p", ("g", ("f", ("f", ("g", "a")))))),))
+    assert literals == ((True, ("p", ("g", ("f", "a")))),) and used
+    # And a problem that needs it: with f(f(x)) = x, p(f^6(a)) is p(a).
+    assert status("cnf(i, axiom, f(f(X)) = X). cnf(p, axiom, p(a)). "
+                  "cnf(g, negated_conjecture, ~p(f(f(f(f(f(f(a)))))))).", effort=4) == (
+        "Unsatisfiable"
+    )

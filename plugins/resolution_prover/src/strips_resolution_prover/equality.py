@@ -21,7 +21,7 @@ on ``~P(b)``). Problems without ``=`` never reach this module.
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Term
@@ -181,10 +181,11 @@ def names_of(literals: Iterable[Literal]) -> tuple[str, ...]:
 
 
 def unique_name_instances(
-    given: PClause, names: tuple[str, ...], limits: Limits
+    given: PClause, names_known: Callable[[], tuple[str, ...]], limits: Limits
 ) -> Iterator[PClause]:
     """From ``s = t | C`` with ``s``, ``t`` variables, parameters or names, derive
-    ``C``·σ for each σ mapping them to two different names (the equation is then false)."""
+    ``C``·σ for each σ mapping them to two different names (the equation is then false).
+    ``names_known`` is asked only when such an equation turns up (it scans the task)."""
     for i, (positive, atom) in enumerate(given.literals):
         if not positive or not is_equality(atom):
             continue
@@ -194,6 +195,7 @@ def unique_name_instances(
         if any(type(side) is str and side.startswith(SKOLEM_PREFIX) for side in (left, right)):
             continue
         rest = given.literals[:i] + given.literals[i + 1 :]
+        names = names_known()
         for first in names if type(left) is not str else (left,):
             for second in names if type(right) is not str else (right,):
                 if first == second:

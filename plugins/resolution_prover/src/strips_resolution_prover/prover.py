@@ -39,6 +39,7 @@ from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofRe
 from strips_framework.world import InitialModel, WorldModel
 from strips_resolution_prover.auto import prove_scheduled
 from strips_resolution_prover.completeness import incompleteness
+from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.equality import (
     equality_resolvents,
     evaluate,
@@ -118,15 +119,29 @@ def _mentions_equality(clauses: Iterable[Clause]) -> bool:
 
 
 def _simplify(
-    clause: PClause, options: ResolutionProver, equality: bool, unique_names: bool, limits: Limits
+    clause: PClause,
+    options: ResolutionProver,
+    equality: bool,
+    unique_names: bool,
+    limits: Limits,
+    demodulators: Demodulators | None = None,
 ) -> PClause | None:
-    """Evaluate equalities and apply the size limits; ``None`` deletes the clause."""
+    """Rewrite with the unit equations retained, evaluate equalities and apply the size
+    limits; ``None`` deletes the clause."""
     literals = clause.literals
     if equality:
+        parents = clause.parents
+        if demodulators:
+            literals, used = demodulators.rewrite(literals)
+            if used:
+                parents = (*parents, *used)
+                literals = tuple(dict.fromkeys(literals))
+                if any((not pos, atom) in literals for pos, atom in literals):
+                    return None  # rewriting made a tautology
         evaluated = evaluate(literals, unique_names)
         if evaluated is None:
             return None
-        if evaluated is not literals:
+        if evaluated is not clause.literals:
             numbering: dict[int, int] = {}
             literals = tuple((pos, renumber(atom, numbering)) for pos, atom in evaluated)
             clause = PClause(
@@ -134,7 +149,7 @@ def _simplify(
                 len(numbering),
                 clause.bindings,
                 sos=clause.sos,
-                parents=clause.parents,
+                parents=parents,
                 label=clause.label,
             )
     limit = options.max_clause_literals
@@ -158,6 +173,7 @@ class _Retained:
         self.subsumption = SubsumptionIndex()
         self.processed: list[PClause] = []
         self.equational: list[PClause] = []
+        self.demodulators = Demodulators()
 
     def register(self, clause: PClause) -> None:
         clause.id = self.first_id + len(self.clauses)
@@ -167,6 +183,7 @@ class _Retained:
         self.processed.append(clause)
         if any(pos and is_equality(atom) for pos, atom in clause.literals):
             self.equational.append(clause)
+            self.demodulators.add(clause)
         self.subsumption.add(clause, deletable=deletable)
         for i in eligible(clause.literals, selecting):
             self.index.add(clause, i)
@@ -189,7 +206,8 @@ class _Axioms(_Retained):
         self.limits = Limits(options.max_weight)
         self.uses_equality = _mentions_equality(initial.clauses)
         #: Whether each attempt takes all its axioms afresh (see the module docstring).
-        self.fresh = fresh or not options.set_of_support or (unique_names and self.uses_equality)
+        # (Equations in M0 would rewrite clauses whether or not the model hides them.)
+        self.fresh = fresh or not options.set_of_support or self.uses_equality
         #: Saturation shows satisfiability only over axioms known to be satisfiable
         #: (:mod:`.completeness`); M0's verdict is made once, for all its models. Every
         #: clause has a positive literal in ``all_positive`` M0s, and additions keep that.
@@ -315,11 +333,7 @@ class _Saturation:
         self.uses_equality = axioms.uses_equality or _mentions_equality(
             chain(extra, negated_goal)
         )
-        # Unique names: the constants equations are instantiated with (an attempt with
-        # equations under unique names has its axioms fresh, all in ``extra``).
-        self.names: tuple[str, ...] = ()
-        if self.uses_equality and unique_names:
-            self.names = names_of(lit for c in chain(extra, negated_goal) for lit in c.literals)
+        self._names: tuple[str, ...] | None = None
 
     # -- the loop -----------------------------------------------------------------------
 
@@ -374,7 +388,7 @@ class _Saturation:
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
         for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
-        for clause in unique_name_instances(given, self.names, self.limits):
+        for clause in unique_name_instances(given, self._names_known, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
         lists = (
@@ -387,6 +401,17 @@ class _Saturation:
             self._add_new(clause)
             if self._done():
                 return
+
+    def _names_known(self) -> tuple[str, ...]:
+        """The constants equations are instantiated with under unique names (none
+        without), found on first use; an attempt with equations under unique names has
+        its axioms fresh, all in ``extra``."""
+        if self._names is None:
+            clauses = chain(self.extra, self.negated_goal)
+            self._names = (
+                names_of(lit for c in clauses for lit in c.literals) if self.unique_names else ()
+            )
+        return self._names
 
     # -- the two layers -------------------------------------------------------------------
 
@@ -435,7 +460,7 @@ class _Saturation:
         # are their instances made false equations by unique names.
         derived = (
             *factors(simplified, self.limits),
-            *unique_name_instances(simplified, self.names, self.limits),
+            *unique_name_instances(simplified, self._names_known, self.limits),
         )
         for clause in derived:
             self._add_axiom(
@@ -468,7 +493,14 @@ class _Saturation:
         self.queue.push(simplified)
 
     def _simplify(self, clause: PClause) -> PClause | None:
-        return _simplify(clause, self.options, self.uses_equality, self.unique_names, self.limits)
+        return _simplify(
+            clause,
+            self.options,
+            self.uses_equality,
+            self.unique_names,
+            self.limits,
+            self.own.demodulators,
+        )
 
     def _record_refutation(self, clause: PClause) -> None:
         self.answers.append(clause.bindings)

@@ -28,7 +28,7 @@ def _may_subsume(c: PClause, d: PClause) -> bool:
     )
 
 
-def _match(pattern: Term, target: Term, subst: dict[int, Term]) -> bool:
+def match_term(pattern: Term, target: Term, subst: dict[int, Term]) -> bool:
     """Extend ``subst`` so that ``pattern``·``subst`` is ``target``; variables of the
     target are constants here, parameters match only themselves."""
     kind = type(pattern)
@@ -42,7 +42,7 @@ def _match(pattern: Term, target: Term, subst: dict[int, Term]) -> bool:
         if type(target) is not tuple or pattern[0] != target[0] or len(pattern) != len(target):
             return False
         for k in range(1, len(pattern)):
-            if not _match(pattern[k], target[k], subst):
+            if not match_term(pattern[k], target[k], subst):
                 return False
         return True
     return pattern == target
@@ -62,7 +62,7 @@ def _match_all(
         if used[j] or target_positive is not positive or target_atom[0] != atom[0]:
             continue
         extended = dict(subst)
-        if not _match(atom, target_atom, extended):
+        if not match_term(atom, target_atom, extended):
             continue
         used[j] = True
         if _match_all(pattern, i + 1, target, used, extended):
@@ -164,7 +164,7 @@ class SubsumptionIndex:
                     if (
                         not unit.dead
                         and unit.id not in hidden
-                        and _match(unit.literals[0][1], atom, {})
+                        and match_term(unit.literals[0][1], atom, {})
                         and (not unit.bindings or set(unit.bindings) <= bindings)
                     ):
                         return True
