@@ -158,3 +158,8 @@ def test_anchors_not_installed_or_on_native_problems_are_skipped_with_a_note(
 def test_a_problem_pattern_that_is_not_a_string_is_an_error(write_matrix):
     with pytest.raises(ConfigError, match=r"'problems.a\[1\]': expected a glob pattern \(a string\), got \['x'\]"):
         Matrix.from_file(write_matrix("[problems]\na = ['*.strips', ['x']]\n[configs.c]\n"))
+
+
+def test_a_product_table_without_a_name_is_an_error(write_matrix):
+    with pytest.raises(ConfigError, match=r"'product.evaluator\[0\]': a table needs a 'name'"):
+        Matrix.from_file(write_matrix(PROBLEMS + "[product]\nevaluator = [{weight = 2}]\n"))

@@ -234,7 +234,10 @@ class _Reader:
             values = [values] if isinstance(values, str | dict) else values
             self.expect(values, list, f"product.{key}", "an array of names or tables")
             for index, value in enumerate(values):
-                self.expect(value, (str, dict), f"product.{key}[{index}]", "a name or a table with 'name'")
+                where = f"product.{key}[{index}]"
+                self.expect(value, (str, dict), where, "a name or a table with 'name'")
+                if isinstance(value, dict) and not isinstance(value.get("name"), str):
+                    self.fail(where, f"a table needs a 'name' (a string), got {value!r}")
             axes[key] = [{"name": v} if isinstance(v, str) else v for v in values]
         configs = []
         varying = [kind for kind, values in axes.items() if len(values) > 1] or list(axes)
