@@ -169,7 +169,7 @@ class Config:
         if not model:
             available = ", ".join(sorted(registry.names("strategy") + registry.names("ground-strategy")))
             raise PluginError(
-                f"{self.source}: search strategy {name!r} ('strategy.name') is not registered "
+                f"{self.source}: 'strategy.name': search strategy {name!r} is not registered "
                 f"(available: {available}); 'strips plugins' lists them"
             )
         return "strategy"
