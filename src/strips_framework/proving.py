@@ -160,10 +160,6 @@ class TheoremProver(Protocol):
         ...
 
 
-class _Opens(Protocol):
-    def open(self, initial: InitialModel, unique_names: bool) -> ProverSession: ...
-
-
 def open_session(prover: TheoremProver, initial: InitialModel, unique_names: bool) -> ProverSession:
     """A session of ``prover`` on M0: its own (``prover.open``) if it has one, else a
     :class:`TaskSession`. M0's clauses are validated here, once."""
