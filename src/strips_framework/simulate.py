@@ -48,6 +48,7 @@ from strips_framework.logic.formulas import (
     Or,
     Truth,
     Var,
+    conjuncts,
     formula_to_str,
     substitute_free,
     term_variables,
@@ -126,7 +127,7 @@ class Simulator:
             schema, binding = step
             shown = f"{schema.name}({', '.join(str(binding[p]) for p in schema.parameters)})"
             closed = self.close(state)
-            for conjunct in _conjuncts(schema.precondition):
+            for conjunct in conjuncts(schema.precondition):
                 if not self.holds(conjunct, binding, closed):
                     failed = formula_to_str(substitute_free(conjunct, binding))
                     return Replay(
@@ -134,7 +135,7 @@ class Simulator:
                     )
             state = _apply(schema, binding, state)
         closed = self.close(state)
-        for conjunct in _conjuncts(self.problem.goal):
+        for conjunct in conjuncts(self.problem.goal):
             if not self.holds(conjunct, {}, closed):
                 return Replay(
                     False,
@@ -224,15 +225,6 @@ class Simulator:
         )
         test = all if isinstance(formula, Forall) else any
         return test(self.holds(formula.body, inner, state) for inner in assignments)
-
-
-def _conjuncts(formula: Formula) -> Iterator[Formula]:
-    """The top-level conjuncts, so a failure can name the one that does not hold."""
-    if isinstance(formula, And):
-        for part in formula.parts:
-            yield from _conjuncts(part)
-    else:
-        yield formula
 
 
 def ground_term(term: Term | Var, env: Env) -> Term:

@@ -84,6 +84,16 @@ class Exists:
 Formula = Atomic | Truth | Not | And | Or | Implies | Iff | Forall | Exists
 
 
+def conjuncts(formula: Formula) -> Iterator[Formula]:
+    """The conjuncts of ``formula``, nested conjunctions flattened (a formula that is no
+    conjunction is its own one conjunct)."""
+    if isinstance(formula, And):
+        for part in formula.parts:
+            yield from conjuncts(part)
+    else:
+        yield formula
+
+
 def atoms_of(formula: Formula) -> Iterator[tuple]:
     """Yield every atom of ``formula`` (with repetitions), left to right."""
     if isinstance(formula, Atomic):

@@ -20,7 +20,7 @@ from typing import ClassVar
 from attrs import field, frozen, validators
 
 from strips_evaluators.options import weight
-from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
+from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.problem import OperatorSchema
 from strips_framework.search.node import Node
@@ -299,19 +299,11 @@ def _extend(atom: Atom, fact: Atom, binding: Binding) -> Binding | None:
     return extended
 
 
-def _conjuncts(formula: Formula) -> Iterator[Formula]:
-    if isinstance(formula, And):
-        for part in formula.parts:
-            yield from _conjuncts(part)
-    else:
-        yield formula
-
-
 def _positive_atoms(formula: Formula) -> list[Atom]:
     """The precondition's positive atoms other than equalities: what grounding joins."""
     return [
         part.atom
-        for part in _conjuncts(formula)
+        for part in conjuncts(formula)
         if isinstance(part, Atomic) and part.atom[0] != EQUALITY
     ]
 
@@ -319,7 +311,7 @@ def _positive_atoms(formula: Formula) -> list[Atom]:
 def _constraints(formula: Formula) -> list[tuple[bool, Atom]]:
     """The precondition's (in)equalities, checked on a complete binding."""
     found = []
-    for part in _conjuncts(formula):
+    for part in conjuncts(formula):
         if isinstance(part, Atomic) and part.atom[0] == EQUALITY:
             found.append((True, part.atom))
         elif isinstance(part, Not) and isinstance(part.body, Atomic) and part.body.atom[0] == EQUALITY:
@@ -373,7 +365,7 @@ def _added_unbound(operators: Sequence[OperatorSchema]) -> set[tuple[str, int]]:
 def _asserted_atoms(formula: Formula) -> Iterator[Atom]:
     """The atoms a goal asserts: its positive conjuncts, inside existentials too (their
     variables match any constant). Negations and disjunctions are dropped (relaxed)."""
-    for part in _conjuncts(formula):
+    for part in conjuncts(formula):
         if isinstance(part, Atomic):
             yield part.atom
         elif isinstance(part, Exists):
