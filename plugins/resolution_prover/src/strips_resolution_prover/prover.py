@@ -269,14 +269,15 @@ class ResolutionSession:
             return prove_scheduled(self.options, task)
         # Unique names instantiate equations over the constants the visible clauses
         # name, which a model's deletions change: such an attempt takes M0 afresh.
+        added = model.added_clauses()
         fresh = self.axioms.fresh or (
-            self.unique_names and _mentions_equality(chain(negated_goal, model.added_clauses()))
+            self.unique_names and _mentions_equality(chain(negated_goal, added))
         )
         hidden_m0 = model.hidden()
         axioms = self.axioms
         if not fresh:
             hidden = {cid for index in hidden_m0 for cid in axioms.by_origin.get(index, ())}
-            extra: Sequence[Clause] = model.added_clauses()
+            extra: Sequence[Clause] = added
         else:
             axioms, hidden, extra = self.none, set(), tuple(model.clauses())
         attempt = _Saturation(
