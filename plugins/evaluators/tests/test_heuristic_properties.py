@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 
 import pytest
+from random_tasks import random_task
+from shared_bench import shared_bench
 
 from strips_evaluators import plugin
 from strips_evaluators.heuristics.exploration import (
@@ -21,14 +23,10 @@ from strips_evaluators.heuristics.exploration import (
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
+from strips_framework.limits import Limits
 from strips_framework.pddl import find_domain, load_task
-from strips_framework.plugins import Registry
-from strips_framework.search.limits import Limits
+from strips_framework.plugin.registry import Registry
 from strips_framework.testing.ground_space import TaskSpace
-
-from random_tasks import random_task
-from shared_bench import shared_bench
-
 
 IPC = shared_bench("ipc")  # without it the IPC cases skip
 PDDL_DOMAINS = ["blocks", "gripper", "depot", "zenotravel", "transport", "miconic", "pegsol"]

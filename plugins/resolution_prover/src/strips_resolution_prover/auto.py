@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 from attrs import evolve
 
-from strips_framework.proving import GAVE_UP, ProofResult, ProofTask
+from strips_framework.worldmodel.proving import GAVE_UP, ProofResult, ProofTask
 
 if TYPE_CHECKING:
     from strips_resolution_prover.prover import ResolutionProver
