@@ -105,7 +105,7 @@ def test_astar_with_an_inadmissible_evaluator_warns_at_config_time(tmp_path):
         warnings.simplefilter("always")
         Planner.create(config)
     assert [str(w.message) for w in caught] == [(
-        f"{tmp_path / 'strips.toml'}: search strategy 'model-astar' ('strategy.name') needs an "
+        f"{tmp_path / 'strips.toml'}:1: search strategy 'model-astar' ('strategy.name') needs an "
         "evaluator with 'admissible' (its first plan is a shortest one only then), but "
         "evaluator 'paper' ('evaluator.name') does not declare it"
     )]

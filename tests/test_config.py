@@ -73,4 +73,4 @@ def test_errors_name_the_file_and_key_path(tmp_path, registry, text, message):
 @pytest.mark.parametrize("path", sorted((Path(__file__).resolve().parents[1] / "examples" / "configs").glob("*.toml")), ids=lambda p: p.name)
 def test_example_configs_are_valid(path):
     planner = Planner.create(Config.from_file(path))
-    assert planner.config.source == str(path)
+    assert str(planner.config.source) == str(path)

@@ -12,6 +12,7 @@ import os
 import re
 import sys
 import tempfile
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -80,6 +81,82 @@ def read_toml(path: Path, what: str) -> dict[str, Any]:
         line, column = _position(text, long[0]) if long else (None, None)
         message = f"not valid TOML: an integer of more than {limit} digits"
         raise InputError(str(path), line, column, message) from None
+
+
+def read_toml_with_keys(path: Path, what: str) -> tuple[dict[str, Any], KeyLines]:
+    """:func:`read_toml`, and where each key is written (for errors about values)."""
+    data = read_toml(path, what)
+    return data, KeyLines(str(path), key_lines(read_text(path, what)))
+
+
+_TABLE_HEADER = re.compile(r"\s*\[\[?([^\]\[]+)\]\]?\s*(?:#.*)?$")
+_KEY_VALUE = re.compile(r"\s*((?:[\w-]+|\"[^\"]*\"|'[^']*')(?:\s*\.\s*(?:[\w-]+|\"[^\"]*\"|'[^']*'))*)\s*=")
+_INLINE_KEY = re.compile(r"[{,]\s*([\w-]+)\s*=")
+
+
+def key_lines(text: str) -> dict[str, int]:
+    """The line on which each dotted key path of a TOML text is first written: table
+    headers, ``key = value`` lines (dotted keys too) and the keys of one-line inline
+    tables. tomllib returns values without positions; this is only used to point an
+    error about a value at its line, so keys inside multi-line arrays are not sought."""
+    lines: dict[str, int] = {}
+    table = ""
+    for number, line in enumerate(text.splitlines(), 1):
+        header = _TABLE_HEADER.match(line)
+        if header:
+            table = _dotted(header.group(1))
+            lines.setdefault(table, number)
+            continue
+        pair = _KEY_VALUE.match(line)
+        if pair:
+            key = ".".join(filter(None, (table, _dotted(pair.group(1)))))
+            lines.setdefault(key, number)
+            for inner in _INLINE_KEY.finditer(line, pair.end()):
+                lines.setdefault(f"{key}.{inner.group(1)}", number)
+    return lines
+
+
+def _dotted(key: str) -> str:
+    return ".".join(part.strip().strip("\"'") for part in key.split("."))
+
+
+class KeyLines:
+    """Where the keys of one TOML file are written, for error messages: ``at(key)`` is
+    ``file:line`` of the key, or of the nearest table around it that the file writes, or
+    the file alone (a default has no line). ``prefix`` locates a table nested in the file
+    (a bench matrix's ``configs.NAME``, named after the location); ``str()`` is the file's
+    name (and that table's)."""
+
+    __slots__ = ("lines", "path", "prefix")
+
+    def __init__(self, path: str, lines: Mapping[str, int] | None = None, prefix: str = "") -> None:
+        self.path, self.lines, self.prefix = path, lines or {}, prefix
+
+    def at(self, key: str) -> str:
+        full = ".".join(filter(None, (self.prefix, key)))
+        while full and full not in self.lines:
+            full = full.rpartition(".")[0]
+        line = f":{self.lines[full]}" if full else ""
+        return f"{self.path}{line}{self._table()}"
+
+    def _table(self) -> str:
+        return f": '{self.prefix}'" if self.prefix else ""
+
+    def within(self, prefix: str) -> KeyLines:
+        """The same file, with keys looked up under the table ``prefix``."""
+        return KeyLines(self.path, self.lines, ".".join(filter(None, (self.prefix, prefix))))
+
+    def __str__(self) -> str:
+        return self.path + self._table()
+
+    def __repr__(self) -> str:
+        return f"KeyLines({self.path!r}, prefix={self.prefix!r})"
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, KeyLines) and (self.path, self.prefix) == (other.path, other.prefix)
+
+    def __hash__(self) -> int:
+        return hash((self.path, self.prefix))
 
 
 def _position(text: str, offset: int) -> tuple[int, int]:

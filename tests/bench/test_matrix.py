@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from strips_framework.bench.configs import AnchorConfig, CommandConfig, PlannerConfig
@@ -84,8 +86,21 @@ def test_mistakes_name_the_file_and_key_path(write_matrix, body, message):
     path = write_matrix(body)
     with pytest.raises(ConfigError) as error:
         Matrix.from_file(path)
-    assert str(error.value).startswith(f"{path}: ")
+    assert re.match(rf"{re.escape(str(path))}(:\d+)?: ", str(error.value))
     assert message in str(error.value)
+
+
+def test_mistakes_name_the_line_of_the_key(write_matrix):
+    """tomllib keeps no positions: the matrix reader finds the key's line in the text."""
+    path = write_matrix(
+        PROBLEMS + "\n[configs.a]\nprover = 'resolution'\n"
+        "evaluator = {name = 'paper', weight = 2}\n"
+    )
+    line = path.read_text().splitlines().index("evaluator = {name = 'paper', weight = 2}") + 1
+    with pytest.raises(ConfigError) as error:
+        Matrix.from_file(path)
+    assert str(error.value).startswith(f"{path}:{line}: 'configs.a': ")
+    assert "unknown key 'evaluator.weight'" in str(error.value)
 
 
 def test_bad_toml_and_missing_file_are_reported(write_matrix, tmp_path):

@@ -42,7 +42,7 @@ from strips_framework.limits import MAX_MEMORY, MAX_TIME
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import COMPONENTS, DEFAULT_CHOICES, Config
 from strips_framework.plugin.registry import Registry
-from strips_framework.user_files import read_toml
+from strips_framework.user_files import KeyLines, read_toml, read_toml_with_keys
 
 PRODUCT_KINDS = (*COMPONENTS, "heuristic")
 TOP_KEYS = ("repetitions", "seed", "limits", "problems", "product", "configs")
@@ -92,11 +92,14 @@ class Matrix:
 
     @classmethod
     def from_file(cls, path: Path) -> Matrix:
-        return cls.from_dict(read_toml(path, "the matrix"), str(path), path.resolve().parent)
+        data, keys = read_toml_with_keys(path, "the matrix")
+        return cls.from_dict(data, keys, path.resolve().parent)
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any], source: str, base: Path) -> Matrix:
-        reader = _Reader(source, base)
+    def from_dict(cls, data: dict[str, Any], source: str | KeyLines, base: Path) -> Matrix:
+        keys = KeyLines(source) if isinstance(source, str) else source
+        source = str(keys)
+        reader = _Reader(keys, base)
         for key in data:
             if key not in TOP_KEYS:
                 reader.fail(key, f"unknown key (expected one of: {', '.join(TOP_KEYS)})")
@@ -107,7 +110,8 @@ class Matrix:
             reader.expect(patterns, list, f"problems.{set_name}", "an array of glob patterns")
             for index, pattern in enumerate(patterns):
                 reader.expect(pattern, str, f"problems.{set_name}[{index}]", "a glob pattern (a string)")
-            problems += expand_problem_set(set_name, patterns, base, f"{source}: 'problems.{set_name}'")
+            where = f"{keys.at('problems.' + set_name)}: 'problems.{set_name}'"
+            problems += expand_problem_set(set_name, patterns, base, where)
         configs = reader.product(reader.table(data, "product"))
         for name, table in reader.table(data, "configs").items():
             configs.append(reader.named_config(name, table))
@@ -161,12 +165,12 @@ def _unique(problems: list[ProblemFile]) -> list[ProblemFile]:
 class _Reader:
     """Reads the matrix's tables, failing with the file and key path."""
 
-    def __init__(self, source: str, base: Path) -> None:
-        self.source, self.base = source, base
+    def __init__(self, keys: KeyLines, base: Path) -> None:
+        self.keys, self.source, self.base = keys, str(keys), base
         self.registry = Registry.from_plugins()
 
     def fail(self, path: str, message: str) -> NoReturn:
-        raise ConfigError(f"{self.source}: '{path}': {message}")
+        raise ConfigError(f"{self.keys.at(path.split('[')[0])}: '{path}': {message}")
 
     def expect(self, value: object, kind: type | tuple[type, ...], path: str, what: str) -> None:
         if not isinstance(value, kind) or isinstance(value, bool) and kind is not bool:
@@ -213,11 +217,11 @@ class _Reader:
     def checked(self, name: str, data: dict[str, Any], path: str) -> PlannerConfig:
         """A planner configuration, checked now so that no run fails on a typo."""
         try:
-            Planner.create(Config.from_dict(data, f"{self.source}: '{path}'"))
-        except StripsError as error:  # config errors name the path; plugin errors do not
+            Planner.create(Config.from_dict(data, self.keys.within(path)))
+        except StripsError as error:  # config errors name the file; plugin errors do not
             message = str(error)
             if not message.startswith(self.source):
-                message = f"{self.source}: '{path}': {message}"
+                message = f"{self.keys.at(path)}: '{path}': {message}"
             raise ConfigError(message) from None
         return PlannerConfig(name, data)
 

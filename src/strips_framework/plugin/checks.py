@@ -37,7 +37,8 @@ def check_combination(registry: Registry, config: Config, kinds: Iterable[str]) 
                 continue
             words = KINDS[need.kind][1]
             message = (
-                f"{config.source}: {KINDS[kind][1]} {registration.name!r} "
+                f"{config.source.at(config.table_of(kind) + '.name')}: "
+                f"{KINDS[kind][1]} {registration.name!r} "
                 f"('{config.table_of(kind)}.name') "
                 f"needs {_article(words)} {words} with {need.capability!r} ({need.reason}), "
                 f"but "

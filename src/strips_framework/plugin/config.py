@@ -48,7 +48,7 @@ from attrs import frozen
 from strips_framework.errors import ConfigError, PluginError
 from strips_framework.limits import Limits
 from strips_framework.plugin.registry import KINDS, Registration, Registry
-from strips_framework.user_files import read_toml
+from strips_framework.user_files import KeyLines, read_toml_with_keys
 
 COMPONENTS = (
     "strategy", "prover", "difference", "relevance", "evaluator", "heuristic", "learner"
@@ -87,7 +87,8 @@ class Choice:
 class Config:
     choices: dict[str, Choice]
     limits: Limits
-    source: str = "<defaults>"
+    #: The file the config came from, and where its keys are written (for messages).
+    source: KeyLines = attrs.field(factory=lambda: KeyLines("<defaults>"))
     #: The kinds the config file chose itself (the others took their defaults).
     chosen: frozenset[str] = frozenset()
     #: The tables of :data:`SECTIONS`, as written (read by the commands that use them).
@@ -99,15 +100,16 @@ class Config:
 
     @classmethod
     def from_file(cls, path: Path) -> Config:
-        return cls.from_dict(read_toml(path, "the config"), str(path))
+        return cls.from_dict(*read_toml_with_keys(path, "the config"))
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any], source: str = "<config>") -> Config:
+    def from_dict(cls, data: dict[str, Any], source: str | KeyLines = "<config>") -> Config:
+        source = KeyLines(source) if isinstance(source, str) else source
         known = (*COMPONENTS, "limits", *SECTIONS)
         for key in data:
             if key not in known:
                 raise ConfigError(
-                    f"{source}: unknown key '{key}' (expected one of: {', '.join(known)})"
+                    f"{source.at(key)}: unknown key '{key}' (expected one of: {', '.join(known)})"
                 )
         choices = {}
         for kind in COMPONENTS:
@@ -116,23 +118,28 @@ class Config:
                 table = {"name": table}
             if not isinstance(table, dict):
                 raise ConfigError(
-                    f"{source}: '{kind}' must be a table or an implementation name, "
+                    f"{source.at(kind)}: '{kind}' must be a table or an implementation name, "
                     f"got {_type_name(table)}"
                 )
             options = dict(table)
             name = options.pop("name", DEFAULT_CHOICES[kind])
             if not isinstance(name, str):
-                raise ConfigError(f"{source}: '{kind}.name' must be a string, got {_type_name(name)}")
+                raise ConfigError(
+                    f"{source.at(kind + '.name')}: '{kind}.name' must be a string, "
+                    f"got {_type_name(name)}"
+                )
             choices[kind] = Choice(kind, name, options)
         limits_table = data.get("limits", {})
         if not isinstance(limits_table, dict):
-            raise ConfigError(f"{source}: 'limits' must be a table, got {_type_name(limits_table)}")
+            raise ConfigError(
+                f"{source.at('limits')}: 'limits' must be a table, got {_type_name(limits_table)}"
+            )
         limits = _instantiate(Limits, limits_table, "limits", source)
         sections = {}
         for key in SECTIONS:
             table = data.get(key, {})
             if not isinstance(table, dict):
-                raise ConfigError(f"{source}: '{key}' must be a table, got {_type_name(table)}")
+                raise ConfigError(f"{source.at(key)}: '{key}' must be a table, got {_type_name(table)}")
             sections[key] = table
         chosen = frozenset(kind for kind in COMPONENTS if kind in data)
         return cls(choices, limits, source, chosen, sections)
@@ -169,7 +176,8 @@ class Config:
         if not model:
             available = ", ".join(sorted(registry.names("strategy") + registry.names("ground-strategy")))
             raise PluginError(
-                f"{self.source}: 'strategy.name': search strategy {name!r} is not registered "
+                f"{self.source.at('strategy.name')}: 'strategy.name': search strategy {name!r} "
+                "is not registered "
                 f"(available: {available}); 'strips plugins' lists them"
             )
         return "strategy"
@@ -194,7 +202,7 @@ class Config:
         except PluginError as error:
             if table not in self.chosen:
                 raise  # a default: no key of the config file to point at
-            raise PluginError(f"{self.source}: '{table}.name': {error}") from None
+            raise PluginError(f"{self.source.at(table + '.name')}: '{table}.name': {error}") from None
 
 
 _NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
@@ -209,7 +217,7 @@ def _instantiate(
     cls: type,
     options: dict[str, Any],
     path: str,
-    source: str,
+    source: KeyLines,
     registration: Registration | None = None,
 ) -> Any:
     """``cls(**options)``, with wrong keys and values reported by key path."""
@@ -219,7 +227,8 @@ def _instantiate(
         if key not in fields:
             expected = ", ".join(sorted(fields)) or "none"
             raise ConfigError(
-                f"{source}: unknown key '{path}.{key}': {what} has no option '{key}' "
+                f"{source.at(path + '.' + key)}: unknown key '{path}.{key}': {what} has no "
+                f"option '{key}' "
                 f"(options: {expected})"
             )
     for key, value in options.items():
@@ -229,11 +238,16 @@ def _instantiate(
     try:
         return cls(**options)
     except (TypeError, ValueError) as error:
-        raise ConfigError(f"{source}: bad value for {_explain(error, path, options)}") from None
+        key, explained = _explain(error, path, options)
+        where = source.at(f"{path}.{key}" if key else path)
+        raise ConfigError(f"{where}: bad value for {explained}") from None
 
 
-def _explain(error: TypeError | ValueError, path: str, options: dict[str, Any]) -> str:
-    """``'path.key': what was expected (got value)`` from an attrs validator's error.
+def _explain(
+    error: TypeError | ValueError, path: str, options: dict[str, Any]
+) -> tuple[str | None, str]:
+    """The key and ``'path.key': what was expected (got value)`` from an attrs
+    validator's error.
 
     attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``;
     other validators raise with a message naming the attribute in quotes.
@@ -247,6 +261,6 @@ def _explain(error: TypeError | ValueError, path: str, options: dict[str, Any]) 
     if attribute is not None and len(args) == 4:
         expected = args[2] if isinstance(args[2], tuple) else (args[2],)
         names = " or ".join(_type_name(t()) if t in _NAMES else t.__name__ for t in expected)
-        return f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
+        return key, f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
     got = f" (got {options[key]!r})" if key in options else ""
-    return f"{where}: {args[0]}{got}"
+    return key, f"{where}: {args[0]}{got}"
