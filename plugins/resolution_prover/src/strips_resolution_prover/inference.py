@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from strips_framework.logic.clauses import Literal
-from strips_framework.logic.terms import Param, Term
+from strips_framework.logic.terms import Param, Term, is_ground
 from strips_framework.logic.unify import Substitution, substitute, unify
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
@@ -154,6 +154,24 @@ def eligible(literals: tuple[Literal, ...], selecting: bool) -> tuple[int, ...]:
 Partners = Callable[[Literal], Iterable[tuple[PClause, int]]]
 
 
+def _unifiers(
+    given: PClause, renamed: tuple[Literal, ...], i: int, partners: Partners
+) -> Iterator[tuple[PClause, int, Substitution]]:
+    """The partners literal ``i`` of the given clause resolves with, and each unifier."""
+    atom = renamed[i][1]
+    for partner, j in partners(renamed[i]):
+        if partner.dead or _clash(atom, partner.literals[j][1]):
+            continue
+        if given.bindings or partner.bindings:
+            subst = merge_bindings(given.bindings, partner.bindings)
+            if subst is None:
+                continue
+        else:
+            subst = {}
+        if unify(atom, partner.literals[j][1], subst) is not None:
+            yield partner, j, subst
+
+
 def resolvents(
     given: PClause,
     renamed: tuple[Literal, ...],
@@ -164,24 +182,42 @@ def resolvents(
     """Binary resolvents of the given clause (renamed apart) on its ``selected`` literals
     with indexed partners (which hold only their own eligible literals)."""
     for i in selected:
-        atom = renamed[i][1]
         rest = renamed[:i] + renamed[i + 1 :]
-        for partner, j in partners(renamed[i]):
-            if partner.dead or _clash(atom, partner.literals[j][1]):
-                continue
-            if given.bindings or partner.bindings:
-                subst = merge_bindings(given.bindings, partner.bindings)
-                if subst is None:
-                    continue
-            else:
-                subst = {}
-            if unify(atom, partner.literals[j][1], subst) is None:
-                continue
+        for partner, j, subst in _unifiers(given, renamed, i, partners):
             others = partner.literals
             literals = rest + others[:j] + others[j + 1 :]
             clause = build(literals, subst, (given.id, partner.id), limits)
             if clause is not None:
                 yield clause
+
+
+def fewest_partners(
+    given: PClause, renamed: tuple[Literal, ...], partners: Partners
+) -> tuple[int, ...]:
+    """The literals a goal clause over Horn axioms resolves on: a ground one with a
+    partner if there is one (the first), else every literal with the fewest partners,
+    counting only literals that have any; none when no literal has a partner.
+
+    Any nonempty choice keeps SLD resolution complete, so the choice only shapes the
+    search. Resolving a ground literal binds nothing, so the order in which ground
+    literals go changes no answer and no difference: one at a time leaves one clause
+    where resolving each would make every subset of them. Among literals with variables,
+    the fewest partners go first ("first fail"), so a variable is bound where it has the
+    fewest values; literals tied at that count all resolve, since which of them binds a
+    shared variable decides what the uncompleted proof offers as differences
+    (``board(p, e, f)`` leaves ``~lift-at(e, f)`` under the passenger's floor and
+    ``~passenger-at(p, f)`` under the lift's). A literal nothing resolves is left for
+    the difference.
+    """
+    counts: list[tuple[int, int]] = []
+    for i, (_, atom) in enumerate(renamed):
+        count = sum(1 for _ in _unifiers(given, renamed, i, partners))
+        if count and is_ground(atom):
+            return (i,)
+        if count:
+            counts.append((count, i))
+    fewest = min((count for count, _ in counts), default=0)
+    return tuple(i for count, i in counts if count == fewest)
 
 
 def factors(given: PClause, limits: Limits, selecting: bool = False) -> Iterator[PClause]:
