@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from strips_framework.logic.clauses import Literal
-from strips_framework.logic.terms import Param, Term, is_ground
+from strips_framework.logic.terms import Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import Substitution, substitute, unify
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
@@ -192,22 +192,26 @@ def resolvents(
 
 
 def fewest_partners(
-    given: PClause, renamed: tuple[Literal, ...], partners: Partners
+    given: PClause, renamed: tuple[Literal, ...], partners: Partners, shared: bool
 ) -> tuple[int, ...]:
     """The literals a goal clause over Horn axioms resolves on: a ground one with a
     partner if there is one (the first), else every literal with the fewest partners,
-    counting only literals that have any; none when no literal has a partner.
+    counting only literals that have any, and with ``shared`` also every literal with a
+    partner that shares a variable with the first of them; none when no literal has a
+    partner.
 
     Any nonempty choice keeps SLD resolution complete, so the choice only shapes the
     search. Resolving a ground literal binds nothing, so the order in which ground
     literals go changes no answer and no difference: one at a time leaves one clause
     where resolving each would make every subset of them. Among literals with variables,
     the fewest partners go first ("first fail"), so a variable is bound where it has the
-    fewest values; literals tied at that count all resolve, since which of them binds a
-    shared variable decides what the uncompleted proof offers as differences
-    (``board(p, e, f)`` leaves ``~lift-at(e, f)`` under the passenger's floor and
-    ``~passenger-at(p, f)`` under the lift's). A literal nothing resolves is left for
-    the difference.
+    fewest values. Which literal binds a variable decides what a failed proof leaves as
+    differences: ``board(p, e, f)`` leaves ``~lift-at(e, f)`` under the passenger's floor,
+    or ``~passenger-at(p, f)`` under the lift's. Literals tied at the fewest partners all
+    resolve; ``shared`` lets every literal that could bind the same variable do so too
+    (``leave(p, lift, f)``: the lift from ``type:elevator(lift)`` as well as from
+    ``lift-at(lift, f)``), which keeps more alternatives at the price of more clauses. A
+    literal nothing resolves is left for the difference.
     """
     counts: list[tuple[int, int]] = []
     for i, (_, atom) in enumerate(renamed):
@@ -216,8 +220,18 @@ def fewest_partners(
             return (i,)
         if count:
             counts.append((count, i))
-    fewest = min((count for count, _ in counts), default=0)
-    return tuple(i for count, i in counts if count == fewest)
+    if not counts:
+        return ()
+    fewest, first = min(counts)
+    unbound = _unbound(renamed[first][1]) if shared else set()
+    return tuple(
+        i for count, i in counts if count == fewest or unbound & _unbound(renamed[i][1])
+    )
+
+
+def _unbound(atom: tuple) -> set[object]:
+    """The variables and unbound parameters of ``atom``."""
+    return {*variables_of(atom), *params_of(atom)}
 
 
 def factors(given: PClause, limits: Limits, selecting: bool = False) -> Iterator[PClause]:

@@ -24,7 +24,7 @@ from itertools import chain
 from typing import ClassVar
 
 from attrs import define, field
-from attrs.validators import ge, instance_of, optional
+from attrs.validators import ge, in_, instance_of, optional
 
 from strips_framework.capabilities import (
     ANSWERS,
@@ -76,6 +76,10 @@ from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
 
 
+#: The values of ``goal_selection`` (see :class:`ResolutionProver`).
+GOAL_SELECTIONS = ("every", "fewest", "fewest-shared")
+
+
 @define(frozen=True)
 class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
@@ -88,11 +92,11 @@ class ResolutionProver:
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
     was then incomplete. ``schedule`` (the automatic mode, :mod:`.auto`) runs a set of
     support on a third of the effort, then full saturation on the rest; it overrides
-    ``set_of_support``. ``sld_selection`` makes an attempt over Horn axioms without
-    equality, whose negated goal is all negative, SLD resolution: a goal clause resolves
-    on one literal (:func:`~.inference.fewest_partners`) instead of each, which is as
-    complete and does not enumerate every subset of a conjunctive goal; other attempts
-    are unchanged.
+    ``set_of_support``. ``goal_selection`` is which literals of a goal clause are
+    resolved upon: ``"every"`` (each), or, in an attempt over Horn axioms without
+    equality whose negated goal is all negative, ``"fewest"`` or ``"fewest-shared"``
+    (:func:`~.inference.fewest_partners`): SLD resolution, as complete, and it does not
+    enumerate every subset of a conjunctive goal; other attempts resolve on every literal.
     """
 
     name: ClassVar[str] = "resolution"
@@ -111,7 +115,7 @@ class ResolutionProver:
     )
     max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
     schedule: bool = field(default=False, validator=instance_of(bool))
-    sld_selection: bool = field(default=False, validator=instance_of(bool))
+    goal_selection: str = field(default="every", validator=in_(GOAL_SELECTIONS))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
@@ -355,7 +359,7 @@ class _Saturation:
         # SLD resolution: Horn axioms (the additions are positive units) and goal clauses
         # without positive literals, so every derived clause is a goal clause too.
         self.sld = (
-            options.sld_selection
+            options.goal_selection != "every"
             and not self.selecting
             and not self.uses_equality
             and axioms.horn
@@ -405,7 +409,8 @@ class _Saturation:
         self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
         if self.sld:
-            selected = fewest_partners(given, renamed, self._partners)
+            shared = self.options.goal_selection == "fewest-shared"
+            selected = fewest_partners(given, renamed, self._partners, shared)
         else:
             selected = eligible(given.literals, self.selecting)
         for clause in resolvents(given, renamed, selected, self._partners, self.limits):

@@ -1,14 +1,20 @@
-"""``sld_selection``: goal clauses over Horn axioms resolve on chosen literals only."""
+"""``goal_selection``: goal clauses over Horn axioms resolve on chosen literals only."""
 
 from __future__ import annotations
 
+import pytest
+
+from strips_framework.errors import ConfigError
 from strips_framework.logic.clauses import Clause
+from strips_framework.planner import Planner
+from strips_framework.plugin.config import Config
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import PROVED, SATURATED, ProofTask
 from strips_resolution_prover import ResolutionProver
 
 F, X = Param("f"), Param("x")
-SLD = ResolutionProver(sld_selection=True)
+SLD = ResolutionProver(goal_selection="fewest")
+SHARED = ResolutionProver(goal_selection="fewest-shared")
 
 
 def fact(*atom: object) -> Clause:
@@ -73,3 +79,21 @@ def test_non_horn_axioms_keep_the_plain_calculus() -> None:
     plain, sld = ResolutionProver().prove(task), SLD.prove(task)
     assert sld.status == plain.status == PROVED
     assert sld.effort_used == plain.effort_used
+
+
+def test_fewest_shared_also_binds_a_variable_from_the_other_literals_that_hold_it() -> None:
+    # leave(p, lift, n4): slow1 is at n4, slow0 is not; the passenger is in neither.
+    lift = Param("lift")
+    axioms = [fact("lift-at", "slow1", "n4"), fact("elevator", "slow0"), fact("elevator", "slow1")]
+    task = ProofTask(axioms, goal(("elevator", lift), ("lift-at", lift, "n4"), ("boarded", "p", lift)))
+    fewest = {str(c) for c in SLD.prove(task).uncompleted}
+    shared = {str(c) for c in SHARED.prove(task).uncompleted}
+    assert "~boarded(p, slow1)  [lift=slow1]" in fewest & shared
+    assert "~lift-at(slow0, n4) | ~boarded(p, slow0)  [lift=slow0]" in shared - fewest
+
+
+def test_a_value_outside_the_choices_is_a_config_error_naming_them() -> None:
+    config = Config.from_dict({"prover": {"name": "resolution", "goal_selection": "all"}}, "x.toml")
+    with pytest.raises(ConfigError, match=r"x.toml: bad value for 'prover.goal_selection': "
+                       r"expected one of 'every', 'fewest', 'fewest-shared', got 'all'"):
+        Planner.create(config)
