@@ -4,9 +4,11 @@
         --benchmark-group-by=param:family --benchmark-sort=name \\
         --benchmark-columns=min,mean,rounds
 
-- ``paper``: every proof task a means-ends run asks on a paper task (recorded once from a
-  resolution run, so both provers answer the same questions), replayed in order; Z3 with
-  its incremental session and with a fresh solver per task.
+- ``paper``: every proof attempt a means-ends run makes on a paper task (recorded once
+  from a resolution run, so both provers answer the same questions), replayed in order
+  through one session on the task's M0, as a search asks them; Z3 with its incremental
+  session (one solver for M0, each model switching its clauses on) and with a fresh
+  solver per attempt (``incremental = false``).
 - ``facts``: a robot world with ``size`` rooms, each with a door to the corridor and two
   boxes, and the question "which door ``k`` from which room ``l`` leads into room 1"
   (the ``gothrudoor`` precondition): more facts, same axioms.
@@ -21,10 +23,11 @@ case runs once, as a smoke test.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
-from attrs import evolve
+from attrs import define, field
 from strips_z3_prover import Z3Prover
 
 from strips_framework.logic.clauses import Clause
@@ -36,9 +39,11 @@ from strips_framework.worldmodel.proving import (
     GAVE_UP,
     ProofResult,
     ProofTask,
+    ProverSession,
     TheoremProver,
     open_session,
 )
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -51,39 +56,69 @@ PROVERS = {
 }
 
 
-class _Recorder:
-    """A prover that keeps the tasks it is asked, answering with the resolution prover."""
-
-    name = "recorder"
-
-    def __init__(self) -> None:
-        self.tasks: list[ProofTask] = []
-        self.inner = ResolutionProver()
-
-    def prove(self, task: ProofTask) -> ProofResult:
-        self.tasks.append(task)
-        return self.inner.prove(task)
+#: One attempt of a search: (model, negated goal, max answers).
+Attempt = tuple[WorldModel, tuple[Clause, ...], int]
 
 
-def recorded_tasks(name: str) -> list[ProofTask]:
-    """The proof tasks of a means-ends run on ``name``, in the order they were asked."""
+@define
+class Recording:
+    """The attempts of one means-ends run, and the M0 they were made on."""
+
+    initial: InitialModel
+    unique_names: bool
+    attempts: list[Attempt] = field(factory=list)
+
+    def tasks(self) -> list[ProofTask]:
+        """The attempts as one-off proof tasks over each model's visible clauses."""
+        return [
+            ProofTask(tuple(model.clauses()), goal, EFFORT, answers, self.unique_names)
+            for model, goal, answers in self.attempts
+        ]
+
+    def replay(self, prover: TheoremProver) -> list[str]:
+        """Every attempt through one session of ``prover``, in order; their statuses."""
+        session = open_session(prover, self.initial, self.unique_names)
+        return [
+            session.prove(model, goal, EFFORT, answers).status
+            for model, goal, answers in self.attempts
+        ]
+
+
+@define
+class _RecordingSession:
+    """A resolution session that keeps the attempts it is asked."""
+
+    inner: ProverSession
+    recording: Recording
+
+    def prove(
+        self, model: WorldModel, negated_goal: Sequence[Clause], effort: int, max_answers: int = 1
+    ) -> ProofResult:
+        self.recording.attempts.append((model, tuple(negated_goal), max_answers))
+        return self.inner.prove(model, negated_goal, effort, max_answers)
+
+
+def recorded_attempts(name: str) -> Recording:
+    """The proof attempts of a means-ends run on ``name``, in the order they were made.
+    (The search's own effort bound fits resolution; the replays give both provers the
+    same, larger one.)"""
     planner = Planner.create(Config.from_dict({"limits": {"time": 60}}))
     problem = planner.load(EXAMPLES / f"{name}.strips")
-    recorder = _Recorder()
     original = GoalProver.__attrs_post_init__
+    recordings: list[Recording] = []
 
     def record(self: GoalProver) -> None:
         original(self)
-        self.prover = recorder
-        self.session = open_session(recorder, self.initial, self.problem.unique_names)
+        recording = Recording(self.initial, self.problem.unique_names)
+        recordings.append(recording)
+        self.session = _RecordingSession(self.session, recording)
 
     GoalProver.__attrs_post_init__ = record
     try:
         assert planner.solve(problem).solved
     finally:
         GoalProver.__attrs_post_init__ = original
-    # The search's own effort bound fits resolution; both provers get the same, larger one.
-    return [evolve(task, effort=EFFORT) for task in recorder.tasks]
+    return recordings[0]
 
 
 def _unit(predicate: str, *args: object) -> Clause:
@@ -136,12 +171,12 @@ def _solve_all(prover: TheoremProver, tasks: list[ProofTask]) -> list[str]:
 @pytest.mark.parametrize("task", PAPER_TASKS)
 def test_paper(benchmark, task: str, prover: str) -> None:
     benchmark.group = "paper"
-    tasks = recorded_tasks(task)
+    recording = recorded_attempts(task)
     statuses = benchmark.pedantic(
-        lambda: _solve_all(PROVERS[prover](), tasks), rounds=1, iterations=1
+        lambda: recording.replay(PROVERS[prover]()), rounds=1, iterations=1
     )
-    assert statuses == _solve_all(ResolutionProver(), tasks)
-    benchmark.extra_info.update(family="paper", tasks=len(tasks))
+    assert statuses == _solve_all(ResolutionProver(), recording.tasks())
+    benchmark.extra_info.update(family="paper", tasks=len(recording.attempts))
 
 
 @pytest.mark.parametrize("prover", ["resolution", "z3"])

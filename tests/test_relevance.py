@@ -73,3 +73,18 @@ def test_instances_needing_a_rigid_fact_that_does_not_hold_are_dropped():
     ])
     found = _relevant(difference, [pushto], model)
     assert [str(r.operator) for r in found] == ["pushto(BOX1, a)"]
+
+
+def test_a_rigid_fact_inside_a_nested_conjunction_counts_too():
+    # A translated PDDL precondition: the type atoms' conjunction holds the action's own.
+    pushto = OperatorSchema(
+        "pushto", [m, n],
+        And([Atomic(("NEXTTO", "ROBOT", m)), And([Atomic(("PUSHABLE", m))])]),
+        [("NEXTTO", m, n)], [("NEXTTO", m, "$")],
+    )
+    model = WorldModel(InitialModel([Clause([(True, ("PUSHABLE", "BOX1"))])]))
+    difference = Difference([
+        Clause([(False, ("NEXTTO", "BOX1", "a"))]), Clause([(False, ("NEXTTO", "ROBOT", "a"))]),
+    ])
+    found = _relevant(difference, [pushto], model)
+    assert [str(r.operator) for r in found] == ["pushto(BOX1, a)"]

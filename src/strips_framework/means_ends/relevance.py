@@ -23,7 +23,7 @@ from typing import ClassVar
 from attrs import frozen
 
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.formulas import And, Atomic
+from strips_framework.logic.formulas import Atomic, conjuncts
 from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
@@ -43,7 +43,8 @@ class AddListRelevance:
     An instance is dropped when a parameter that only its effects mention (not its
     precondition) stays unbound or is bound to another operator's parameter: applying it
     would need a value that neither this resolution nor the precondition proof provides.
-    It is also dropped when its precondition can never hold: a conjunct is a ground atom
+    It is also dropped when its precondition can never hold: a conjunct (nested
+    conjunctions flattened) is a ground atom
     of a *rigid* predicate (one no operator adds and no rule of the model concludes) that
     is not a fact of the model. Facts of rigid predicates can only be deleted, so such an
     atom never becomes true (``pushto(ROBOT, BOX2)`` needs ``PUSHABLE(ROBOT)``).
@@ -152,10 +153,10 @@ def _rigid_predicates(
 def _never_applicable(
     instance: OperatorInstance, rigid: frozenset[tuple[str, int]], model: WorldModel
 ) -> bool:
-    precondition = instance.schema.precondition
-    conjuncts = precondition.parts if isinstance(precondition, And) else (precondition,)
     binding = instance.binding_map()
-    for part in conjuncts:
+    # A translated PDDL precondition nests the action's own conjunction inside the type
+    # atoms' one, so the conjuncts are flattened.
+    for part in conjuncts(instance.schema.precondition):
         if isinstance(part, Atomic) and (part.atom[0], len(part.atom) - 1) in rigid:
             atom = substitute(part.atom, binding)
             if is_ground(atom) and not model.holds(atom):

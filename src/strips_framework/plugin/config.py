@@ -249,8 +249,8 @@ def _explain(
     """The key and ``'path.key': what was expected (got value)`` from an attrs
     validator's error.
 
-    attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``;
-    other validators raise with a message naming the attribute in quotes.
+    attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``
+    and ``in_`` ``ValueError(message, attribute, options, value)``; other validators raise with a message naming the attribute in quotes.
     """
     args = error.args
     attribute = next((a for a in args if isinstance(a, attrs.Attribute)), None)
@@ -260,6 +260,9 @@ def _explain(
     where = f"'{path}.{key}'" if key else f"'{path}'"
     if attribute is not None and len(args) == 4:
         expected = args[2] if isinstance(args[2], tuple) else (args[2],)
+        if not all(isinstance(t, type) for t in expected):  # attrs' ``in_``: the values
+            values = ", ".join(repr(v) for v in expected)
+            return f"{where}: expected one of {values}, got {args[3]!r}"
         names = " or ".join(_type_name(t()) if t in _NAMES else t.__name__ for t in expected)
         return key, f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
     got = f" (got {options[key]!r})" if key in options else ""

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from strips_framework.logic.clauses import Literal
-from strips_framework.logic.terms import Param, Term
+from strips_framework.logic.terms import Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import Substitution, substitute, unify
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
@@ -154,6 +154,24 @@ def eligible(literals: tuple[Literal, ...], selecting: bool) -> tuple[int, ...]:
 Partners = Callable[[Literal], Iterable[tuple[PClause, int]]]
 
 
+def _unifiers(
+    given: PClause, renamed: tuple[Literal, ...], i: int, partners: Partners
+) -> Iterator[tuple[PClause, int, Substitution]]:
+    """The partners literal ``i`` of the given clause resolves with, and each unifier."""
+    atom = renamed[i][1]
+    for partner, j in partners(renamed[i]):
+        if partner.dead or _clash(atom, partner.literals[j][1]):
+            continue
+        if given.bindings or partner.bindings:
+            subst = merge_bindings(given.bindings, partner.bindings)
+            if subst is None:
+                continue
+        else:
+            subst = {}
+        if unify(atom, partner.literals[j][1], subst) is not None:
+            yield partner, j, subst
+
+
 def resolvents(
     given: PClause,
     renamed: tuple[Literal, ...],
@@ -164,24 +182,56 @@ def resolvents(
     """Binary resolvents of the given clause (renamed apart) on its ``selected`` literals
     with indexed partners (which hold only their own eligible literals)."""
     for i in selected:
-        atom = renamed[i][1]
         rest = renamed[:i] + renamed[i + 1 :]
-        for partner, j in partners(renamed[i]):
-            if partner.dead or _clash(atom, partner.literals[j][1]):
-                continue
-            if given.bindings or partner.bindings:
-                subst = merge_bindings(given.bindings, partner.bindings)
-                if subst is None:
-                    continue
-            else:
-                subst = {}
-            if unify(atom, partner.literals[j][1], subst) is None:
-                continue
+        for partner, j, subst in _unifiers(given, renamed, i, partners):
             others = partner.literals
             literals = rest + others[:j] + others[j + 1 :]
             clause = build(literals, subst, (given.id, partner.id), limits)
             if clause is not None:
                 yield clause
+
+
+def fewest_partners(
+    given: PClause, renamed: tuple[Literal, ...], partners: Partners, shared: bool
+) -> tuple[int, ...]:
+    """The literals a goal clause over Horn axioms resolves on: a ground one with a
+    partner if there is one (the first), else every literal with the fewest partners,
+    counting only literals that have any, and with ``shared`` also every literal with a
+    partner that shares a variable with the first of them; none when no literal has a
+    partner.
+
+    Any nonempty choice keeps SLD resolution complete, so the choice only shapes the
+    search. Resolving a ground literal binds nothing, so the order in which ground
+    literals go changes no answer and no difference: one at a time leaves one clause
+    where resolving each would make every subset of them. Among literals with variables,
+    the fewest partners go first ("first fail"), so a variable is bound where it has the
+    fewest values. Which literal binds a variable decides what a failed proof leaves as
+    differences: ``board(p, e, f)`` leaves ``~lift-at(e, f)`` under the passenger's floor,
+    or ``~passenger-at(p, f)`` under the lift's. Literals tied at the fewest partners all
+    resolve; ``shared`` lets every literal that could bind the same variable do so too
+    (``leave(p, lift, f)``: the lift from ``type:elevator(lift)`` as well as from
+    ``lift-at(lift, f)``), which keeps more alternatives at the price of more clauses. A
+    literal nothing resolves is left for the difference.
+    """
+    counts: list[tuple[int, int]] = []
+    for i, (_, atom) in enumerate(renamed):
+        count = sum(1 for _ in _unifiers(given, renamed, i, partners))
+        if count and is_ground(atom):
+            return (i,)
+        if count:
+            counts.append((count, i))
+    if not counts:
+        return ()
+    fewest, first = min(counts)
+    unbound = _unbound(renamed[first][1]) if shared else set()
+    return tuple(
+        i for count, i in counts if count == fewest or unbound & _unbound(renamed[i][1])
+    )
+
+
+def _unbound(atom: tuple) -> set[object]:
+    """The variables and unbound parameters of ``atom``."""
+    return {*variables_of(atom), *params_of(atom)}
 
 
 def factors(given: PClause, limits: Limits, selecting: bool = False) -> Iterator[PClause]:

@@ -24,7 +24,7 @@ from itertools import chain
 from typing import ClassVar
 
 from attrs import define, field
-from attrs.validators import ge, instance_of, optional
+from attrs.validators import ge, in_, instance_of, optional
 
 from strips_framework.capabilities import (
     ANSWERS,
@@ -60,6 +60,7 @@ from strips_resolution_prover.inference import (
     Limits,
     eligible,
     factors,
+    fewest_partners,
     resolvents,
 )
 from strips_resolution_prover.partners import PartnerIndex
@@ -75,6 +76,10 @@ from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
 
 
+#: The values of ``goal_selection`` (see :class:`ResolutionProver`).
+GOAL_SELECTIONS = ("every", "fewest", "fewest-shared")
+
+
 @define(frozen=True)
 class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
@@ -87,7 +92,11 @@ class ResolutionProver:
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
     was then incomplete. ``schedule`` (the automatic mode, :mod:`.auto`) runs a set of
     support on a third of the effort, then full saturation on the rest; it overrides
-    ``set_of_support``.
+    ``set_of_support``. ``goal_selection`` is which literals of a goal clause are
+    resolved upon: ``"every"`` (each), or, in an attempt over Horn axioms without
+    equality whose negated goal is all negative, ``"fewest"`` or ``"fewest-shared"``
+    (:func:`~.inference.fewest_partners`): SLD resolution, as complete, and it does not
+    enumerate every subset of a conjunctive goal; other attempts resolve on every literal.
     """
 
     name: ClassVar[str] = "resolution"
@@ -106,6 +115,7 @@ class ResolutionProver:
     )
     max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
     schedule: bool = field(default=False, validator=instance_of(bool))
+    goal_selection: str = field(default="every", validator=in_(GOAL_SELECTIONS))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
@@ -123,6 +133,10 @@ class ResolutionProver:
 
 def _mentions_equality(clauses: Iterable[Clause]) -> bool:
     return any(is_equality(atom) for clause in clauses for _, atom in clause.literals)
+
+
+def _positives(clause: Clause) -> int:
+    return sum(1 for positive, _ in clause.literals if positive)
 
 
 def _simplify(
@@ -222,6 +236,7 @@ class _Axioms(_Retained):
             initial.clauses, set_of_support=True, uses_equality=False
         )
         self.all_positive = all(any(pos for pos, _ in c.literals) for c in initial.clauses)
+        self.horn = all(_positives(c) <= 1 for c in initial.clauses)
         if self.fresh:
             return
         for origin, axiom in enumerate(initial.clauses):
@@ -341,6 +356,16 @@ class _Saturation:
         self.uses_equality = axioms.uses_equality or _mentions_equality(
             chain(extra, negated_goal)
         )
+        # SLD resolution: Horn axioms (the additions are positive units) and goal clauses
+        # without positive literals, so every derived clause is a goal clause too.
+        self.sld = (
+            options.goal_selection != "every"
+            and not self.selecting
+            and not self.uses_equality
+            and axioms.horn
+            and all(_positives(c) <= 1 for c in extra)
+            and not any(_positives(c) for c in negated_goal)
+        )
         self._names: tuple[str, ...] | None = None
 
     # -- the loop -----------------------------------------------------------------------
@@ -383,11 +408,17 @@ class _Saturation:
             self.own.subsumption.note_deleted()
         self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
-        selected = eligible(given.literals, self.selecting)
+        if self.sld:
+            shared = self.options.goal_selection == "fewest-shared"
+            selected = fewest_partners(given, renamed, self._partners, shared)
+        else:
+            selected = eligible(given.literals, self.selecting)
         for clause in resolvents(given, renamed, selected, self._partners, self.limits):
             self._add_new(clause)
             if self._done():
                 return
+        if self.sld:
+            return  # SLD resolution is complete without factoring
         for clause in factors(given, self.limits, self.selecting):
             self._add_new(clause)
         if self.uses_equality:
