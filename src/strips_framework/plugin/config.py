@@ -250,7 +250,8 @@ def _explain(
     validator's error.
 
     attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``
-    and ``in_`` ``ValueError(message, attribute, options, value)``; other validators raise with a message naming the attribute in quotes.
+    and ``in_`` ``ValueError(message, attribute, options, value)``; other validators raise
+    with a message naming the attribute in quotes.
     """
     args = error.args
     attribute = next((a for a in args if isinstance(a, attrs.Attribute)), None)
@@ -262,7 +263,7 @@ def _explain(
         expected = args[2] if isinstance(args[2], tuple) else (args[2],)
         if not all(isinstance(t, type) for t in expected):  # attrs' ``in_``: the values
             values = ", ".join(repr(v) for v in expected)
-            return f"{where}: expected one of {values}, got {args[3]!r}"
+            return key, f"{where}: expected one of {values}, got {args[3]!r}"
         names = " or ".join(_type_name(t()) if t in _NAMES else t.__name__ for t in expected)
         return key, f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
     got = f" (got {options[key]!r})" if key in options else ""
