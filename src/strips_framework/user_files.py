@@ -11,7 +11,6 @@ import contextlib
 import os
 import re
 import sys
-import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -201,6 +200,8 @@ def _is_dir(path: Path) -> bool:
 def write_atomically(path: Path, text: str) -> None:
     """Write ``text`` to ``path`` through a temporary file in the same folder, renamed over
     it: a reader (or an interrupted run) sees the old file or the new one, never half."""
+    import tempfile  # with random, shutil, bz2, lzma: only runs that write a file pay
+
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as file:

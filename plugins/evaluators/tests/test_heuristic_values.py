@@ -121,3 +121,35 @@ def test_lmcount_weighs_landmarks_by_their_cheapest_achiever(small_task) -> None
     value, preferred = HEURISTICS["lmcount"]().for_task(task).estimate_with_preferred(task.init)
     assert value == 2
     assert [task.operators[i].name for i in preferred] == ["direct"]
+
+
+#: ``done`` the slow way (cost 2), or the fast way that also needs ``tool`` (cost 1 each);
+#: the goal wants ``key`` too. Optimal cost 3 (get-key, slow; or get-key, get-tool, fast).
+KEY_AND_TOOL = [
+    ("slow", "start", "done", "", 2),
+    ("fast", "start key tool", "done", "", 1),
+    ("get-tool", "", "tool", "", 1),
+    ("get-key", "", "key", "", 1),
+]
+
+
+def test_lmcut_breaks_supporter_ties_at_the_goal_zone_border(make_task) -> None:
+    """After the first cut ({slow, fast}, 1) ``fast`` costs 0 and ``done`` and ``key``
+    tie at hmax 1. Taking ``key`` through the zero-cost ``fast`` into the goal zone gives
+    the weak landmark {slow, get-key} (get-key is needed anyway) and h = 2. Fast
+    Downward's tie-breaking takes a tied precondition that no zero-cost operator adds
+    (``key``, at the zone's border) as the goal's supporter instead: landmarks {get-key}
+    and then {slow, get-tool}, h = 3, the optimal cost."""
+    task = make_task(KEY_AND_TOOL, init="start", goal="done key", uses_costs=True)
+    assert HEURISTICS["lmcut"]().for_task(task).estimate(task.init) == 3
+
+
+def test_ff_supporter_ties_go_to_the_fact_reached_last(make_task) -> None:
+    """``p`` and ``q`` both hold, and ``x`` costs 1 through either operator. Facts of
+    equal cost leave the queue last in, first out, as in Fast Downward: ``q`` (queued
+    after ``p``) goes first, so ``from-q`` reaches ``x`` first, becomes its supporter and
+    the preferred operator."""
+    task = make_task([("from-p", "p", "x", ""), ("from-q", "q", "x", "")], init="p q", goal="x")
+    value, preferred = HEURISTICS["ff"]().for_task(task).estimate_with_preferred(task.init)
+    assert value == 1
+    assert [task.operators[i].name for i in preferred] == ["from-q"]

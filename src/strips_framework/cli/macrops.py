@@ -5,21 +5,18 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from strips_framework.cli import exit_codes
 from strips_framework.errors import InputError, StripsError
-from strips_framework.formats.ipc import read_plan
-from strips_framework.macrops.ground_table import ground_table, parse_plan, solution_steps
-from strips_framework.macrops.learning import learn_sequence
-from strips_framework.macrops.library_file import read_library, write_library
-from strips_framework.macrops.macrop import Library
-from strips_framework.macrops.planex import FaultModel, Summary, execute
-from strips_framework.macrops.proofs import MacroError
-from strips_framework.macrops.render import html_table, svg_table, text_table
-from strips_framework.pddl.files import is_pddl
-from strips_framework.planner import Planner
-from strips_framework.result import Status
-from strips_framework.worldmodel.problem import Problem
+
+if TYPE_CHECKING:
+    from strips_framework.planner import Planner
+    from strips_framework.worldmodel.problem import Problem
+
+# The macrops package, the world-model layer and the renderers are imported inside the
+# commands: `strips` builds these parsers on every start, and `strips solve` on a PDDL
+# task needs none of them.
 
 
 def add_parsers(commands: argparse._SubParsersAction) -> None:
@@ -63,6 +60,8 @@ def _problem(planner: Planner, files: list[Path], rest: int, command: str) -> Pr
     if not 1 <= len(given) <= 2:
         raise StripsError(f"usage: strips {command} [DOMAIN] PROBLEM{' PLAN' * rest}")
     domain, path = (given[0] if len(given) == 2 else None), given[-1]
+    from strips_framework.pddl.files import is_pddl
+
     if is_pddl(path, domain):
         from strips_framework.pddl import to_problem
 
@@ -71,6 +70,10 @@ def _problem(planner: Planner, files: list[Path], rest: int, command: str) -> Pr
 
 
 def learn(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.macrops.learning import learn_sequence
+    from strips_framework.macrops.library_file import read_library, write_library
+    from strips_framework.macrops.macrop import Library
+
     problems = [(args.domain, path) for path in args.problems]
     first = _problem(planner, [*([args.domain] if args.domain else []), args.problems[0]], 0,
                      "learn")
@@ -89,6 +92,12 @@ def learn(planner: Planner, args: argparse.Namespace) -> int:
 
 
 def table(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.formats.ipc import read_plan
+    from strips_framework.macrops.ground_table import ground_table, parse_plan
+    from strips_framework.macrops.library_file import read_library
+    from strips_framework.macrops.proofs import MacroError
+    from strips_framework.macrops.render import html_table, svg_table, text_table
+
     if args.macrops:
         problem = _problem(planner, args.files, 0, "table")
         library = read_library(args.macrops, problem)
@@ -120,6 +129,13 @@ def table(planner: Planner, args: argparse.Namespace) -> int:
 
 
 def execute_command(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.formats.ipc import read_plan
+    from strips_framework.macrops.ground_table import parse_plan, solution_steps
+    from strips_framework.macrops.library_file import read_library
+    from strips_framework.macrops.macrop import Library
+    from strips_framework.macrops.planex import FaultModel, Summary, execute
+    from strips_framework.result import Status
+
     if args.runs < 1:
         raise StripsError(f"--runs must be at least 1, got {args.runs}")
     problem = _problem(planner, args.files, 0, "execute")

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import ClassVar, Protocol
+from typing import TYPE_CHECKING, ClassVar, Protocol
 
-from strips_framework.worldmodel.problem import Problem
+if TYPE_CHECKING:  # `strips solve` on PDDL reads plans through formats.ipc, no Problem
+    from strips_framework.worldmodel.problem import Problem
 
 
 class ProblemLoader(Protocol):

@@ -5,7 +5,7 @@ The same algorithms as the pure-Python reference (:func:`.additive.additive_expl
 and :func:`.ff.relaxed_plan`, :func:`.hmax.max_exploration`) over the same
 :class:`~.relaxation.RelaxedTask`, laid out once as C arrays (compressed rows for the
 operators of each fact and the effects of each operator). The queue pops facts by cost,
-first in first out among equal costs, which is the order of the reference's bucket queue,
+last in first out among equal costs, which is the order of the reference's bucket queue,
 so supporters, relaxed plans and hence preferred operators and search expansions are the
 same; a differential test checks that on every shared domain.
 """
@@ -19,6 +19,8 @@ ctypedef unsigned long long u64
 cdef long long INFINITE = (<long long> 1) << 62
 #: Supporter of a fact that holds in the state (the reference's IN_STATE).
 cdef int IN_STATE = -1
+#: Pushes are numbered in a queue key's low 32 bits, counting down from this.
+cdef u64 LAST_ORDER = 0xFFFFFFFF
 
 
 cdef int* _ints(values) except NULL:
@@ -159,7 +161,8 @@ cdef class Explorer:
         free(self.stack)
 
     cdef int _push(self, Py_ssize_t* size, u64* order, long long value, int fact) except -1:
-        """Queue ``fact`` at ``value``; ties pop first in, first out (``order``)."""
+        """Queue ``fact`` at ``value``; ties pop last in, first out (the key's low bits
+        count ``order`` down)."""
         cdef Py_ssize_t i, parent
         cdef u64 key
         if size[0] == self.heap_capacity:
@@ -173,7 +176,7 @@ cdef class Explorer:
             if self.heap_fact == NULL:
                 raise MemoryError()
         self.heap_fact[order[0]] = fact
-        key = (<u64> value << 32) | order[0]
+        key = (<u64> value << 32) | (LAST_ORDER - order[0])
         order[0] += 1
         i = size[0]
         size[0] += 1
@@ -239,7 +242,7 @@ cdef class Explorer:
         while size:
             key = self._pop(&size)
             level = <long long> (key >> 32)
-            fact = self.heap_fact[key & 0xFFFFFFFF]
+            fact = self.heap_fact[LAST_ORDER - (key & LAST_ORDER)]
             if self.cost[fact] != level:
                 continue
             if self.is_goal[fact]:

@@ -104,8 +104,12 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
 
     The queue is a dict of buckets (one list of facts per cost) with a heap of the costs
     that have a bucket: most pushes are a list append, and the heap only sees each
-    distinct cost once. Facts reached at the cost being taken (by a zero-cost operator)
-    go to a new bucket of that cost, taken next.
+    distinct cost once. A bucket is a stack, last in first out, as Fast Downward's bucket
+    queue is: among facts of equal cost the one reached last goes first (a fact reached
+    at the cost being taken, by a zero-cost operator, comes out next). The order decides
+    which of several equally cheap operators becomes a supporter, and so the relaxed
+    plan, the preferred operators and LM-cut's landmarks; following Fast Downward's
+    order keeps search behaviour close to its (``docs/heuristics.md``).
     """
     pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
     start, cost = start_exploration(relaxed, state)
@@ -117,10 +121,12 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
     levels = [0]
     goals_left = len(relaxed.goal)
     while levels:
-        level = heappop(levels)
+        level = levels[0]
         # Adds the fact's cost and counts one precondition off, in one step.
         increment = (level << bits) - 1
-        for fact in buckets.pop(level):
+        bucket = buckets[level]
+        while bucket:
+            fact = bucket.pop()
             if cost[fact] != level:
                 continue  # reached more cheaply after it was put in this bucket
             if is_goal[fact]:
@@ -136,10 +142,14 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
                         if value < cost[effect]:
                             cost[effect] = value
                             supporter[effect] = op
-                            bucket = buckets.setdefault(value, [])
-                            if not bucket:
+                            queued = buckets.get(value)
+                            if queued is None:  # a stack per cost: last in, first out
+                                buckets[value] = [effect]
                                 heappush(levels, value)
-                            bucket.append(effect)
+                            else:
+                                queued.append(effect)
+        del buckets[level]
+        heappop(levels)
     return cost, supporter
 
 
@@ -200,8 +210,10 @@ def max_exploration(
     buckets = {0: start}
     levels = [0]
     while levels:
-        level = heappop(levels)
-        for fact in buckets.pop(level):
+        level = levels[0]
+        bucket = buckets[level]
+        while bucket:
+            fact = bucket.pop()
             if cost[fact] != level:
                 continue
             for op in pre_of[fact]:
@@ -214,11 +226,16 @@ def max_exploration(
                     for effect in add[op]:
                         if reached < cost[effect]:
                             cost[effect] = reached
-                            bucket = buckets.setdefault(reached, [])
-                            if not bucket:
+                            queued = buckets.get(reached)
+                            if queued is None:
+                                buckets[reached] = [effect]
                                 heappush(levels, reached)
-                            bucket.append(effect)
+                            else:
+                                queued.append(effect)
+        del buckets[level]
+        heappop(levels)
     return cost
+
 
 
 def relaxed_plan(relaxed: RelaxedTask, state: int) -> tuple[float, set[int]]:
