@@ -56,9 +56,18 @@ def read_text(path: Path, what: str = "the file") -> str:
 
 def read_toml(path: Path, what: str) -> dict[str, Any]:
     """The TOML file at ``path`` as a dict; syntax errors give their line and column."""
+    return _parse_toml(read_text(path, what), path)
+
+
+def read_toml_with_keys(path: Path, what: str) -> tuple[dict[str, Any], KeyLines]:
+    """:func:`read_toml`, and where each key is written (for errors about values)."""
+    text = read_text(path, what)
+    return _parse_toml(text, path), KeyLines(str(path), key_lines(text))
+
+
+def _parse_toml(text: str, path: Path) -> dict[str, Any]:
     import tomllib  # not at the top: a run without a config file does not pay for it
 
-    text = read_text(path, what)
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -80,12 +89,6 @@ def read_toml(path: Path, what: str) -> dict[str, Any]:
         line, column = _position(text, long[0]) if long else (None, None)
         message = f"not valid TOML: an integer of more than {limit} digits"
         raise InputError(str(path), line, column, message) from None
-
-
-def read_toml_with_keys(path: Path, what: str) -> tuple[dict[str, Any], KeyLines]:
-    """:func:`read_toml`, and where each key is written (for errors about values)."""
-    data = read_toml(path, what)
-    return data, KeyLines(str(path), key_lines(read_text(path, what)))
 
 
 _TABLE_HEADER = re.compile(r"\s*\[\[?([^\]\[]+)\]\]?\s*(?:#.*)?$")
