@@ -4,7 +4,8 @@ claim. A command is collected when it can run in CI: no placeholder (``PROBLEM``
 matrix run (minutes) or a Dask run (a cluster). Each runs in a fresh folder beside a link
 to ``examples/``, so the files it writes (plan.txt, runs.jsonl) land there, after the
 commands above it in its block (a block is a session: ``strips learn ... -o robot.lib``
-makes the library the next line uses). Commands run in bash, so ``{a,b}`` expands."""
+makes the library the next line uses; only the commands that write what a command reads
+are replayed before it). Commands run in bash, so ``{a,b}`` expands."""
 
 from __future__ import annotations
 
@@ -81,9 +82,28 @@ def _commands() -> list[object]:
             key = (argv[1], *sorted(w for w in argv if INPUT.search(w)))
             if _runnable(command) and key not in seen:
                 seen.add(key)
-                setup = tuple(c for c in earlier if _runnable(c))
+                setup = _needed(argv, [c for c in earlier if _runnable(c)])
                 found.append(pytest.param(command, setup, id=f"{doc.name}:{line}"))
     return found
+
+
+def _writes(argv: list[str]) -> set[str]:
+    """The files a command writes (the words after its output options)."""
+    return {word for before, word in zip(argv, argv[1:]) if before in OUTPUT_OPTIONS}
+
+
+def _needed(argv: list[str], earlier: list[str]) -> tuple[str, ...]:
+    """The earlier commands of the block that write a file this command reads, and those
+    that theirs need in turn, in block order: a session replays only what it depends on
+    (replaying every earlier command made the README block quadratic in its length)."""
+    words = {w for word in argv for w in _expand(word)}
+    chosen: list[str] = []
+    for command in reversed(earlier):
+        earlier_argv = shlex.split(command.partition("#")[0])
+        if _writes(earlier_argv) & words:
+            chosen.append(command)
+            words |= {w for word in earlier_argv for w in _expand(word)}
+    return tuple(reversed(chosen))
 
 
 COMMANDS = _commands()
