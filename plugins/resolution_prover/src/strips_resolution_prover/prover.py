@@ -23,7 +23,7 @@ from collections.abc import Set as AbstractSet
 from itertools import chain
 from typing import ClassVar
 
-from attrs import define, field
+from attrs import define, evolve, field
 from attrs.validators import ge, instance_of, optional
 
 from strips_framework.capabilities import (
@@ -37,10 +37,11 @@ from strips_framework.capabilities import (
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
 from strips_framework.world import InitialModel, WorldModel
-from strips_resolution_prover.auto import prove_scheduled
+from strips_resolution_prover.auto import is_world_model, prove_automatically
 from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.equality import (
+    equality_factors,
     equality_resolvents,
     evaluate,
     is_equality,
@@ -78,9 +79,10 @@ class ResolutionProver:
     which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
-    was then incomplete. ``schedule`` (the automatic mode, :mod:`.auto`) runs a set of
-    support on a third of the effort, then full saturation on the rest; it overrides
-    ``set_of_support``.
+    was then incomplete. ``schedule`` (the default) is the automatic mode (:mod:`.auto`):
+    it picks the set of support, saturation, or saturation then the set of support from
+    the task's features, overriding ``set_of_support``; ``schedule = false`` runs the one
+    calculus ``set_of_support`` names.
     """
 
     name: ClassVar[str] = "resolution"
@@ -98,19 +100,24 @@ class ResolutionProver:
         default=None, validator=optional([instance_of(int), ge(1)])
     )
     max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
-    schedule: bool = field(default=False, validator=instance_of(bool))
+    schedule: bool = field(default=True, validator=instance_of(bool))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
         if self.schedule:
-            return prove_scheduled(self, task)
+            return prove_automatically(self, task)
         initial = InitialModel(task.axioms)
         return ResolutionSession(self, initial, task.unique_names).prove(
             WorldModel(initial), task.negated_goal, task.effort, task.max_answers
         )
 
     def open(self, initial: InitialModel, unique_names: bool) -> ResolutionSession:
-        """A session on M0, which is imported and indexed here, once."""
+        """A session on M0, which is imported and indexed here, once. In the automatic
+        mode a world model gets the set of support for every attempt (:mod:`.auto`); the
+        additions of a model are ground facts, which keep it one."""
+        if self.schedule and initial.clauses and is_world_model(initial.clauses):
+            sos = evolve(self, schedule=False, set_of_support=True)
+            return ResolutionSession(sos, initial, unique_names)
         return ResolutionSession(self, initial, unique_names)
 
 
@@ -264,9 +271,9 @@ class ResolutionSession:
     ) -> ProofResult:
         """Refute the clauses visible in ``model`` ∪ ``negated_goal`` within ``effort``
         given clauses."""
-        if self.options.schedule:  # two calculi in turn: each attempt is a task of its own
+        if self.options.schedule:  # the calculus depends on the attempt: a task of its own
             task = ProofTask(model.clauses(), negated_goal, effort, max_answers, self.unique_names)
-            return prove_scheduled(self.options, task)
+            return prove_automatically(self.options, task)
         # Unique names instantiate equations over the constants the visible clauses
         # name, which a model's deletions change: such an attempt takes M0 afresh.
         added = model.added_clauses()
@@ -389,6 +396,9 @@ class _Saturation:
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
         for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
+        if self.selecting:  # saturation: the superposition calculus (see .equality)
+            for clause in equality_factors(given, self.limits):
+                self._add_new(clause)
         for clause in unique_name_instances(given, self._names_known, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
@@ -398,7 +408,9 @@ class _Saturation:
             else (self.axioms.equational, self.own.equational)
         )
         partners = [c for c in chain(*lists) if c.id not in self.hidden]
-        for clause in paramodulants(given, renamed, partners, self.limits):
+        for clause in paramodulants(
+            given, renamed, partners, self.limits, saturating=self.selecting
+        ):
             self._add_new(clause)
             if self._done():
                 return
@@ -531,13 +543,17 @@ class _Saturation:
         """Whether saturation here shows satisfiability (see :mod:`.completeness`). Over a
         session's M0 the verdict on M0 was made once; hidden clauses are not taken out
         of it, which can only turn a Satisfiable into GaveUp."""
-        set_of_support = self.options.set_of_support
+        set_of_support = self.options.set_of_support and self.has_axioms
         if self.axioms.fresh or self.uses_equality:
             reason = incompleteness(
-                self.extra, set_of_support=set_of_support, uses_equality=self.uses_equality
+                self.extra,
+                set_of_support=set_of_support,
+                uses_equality=self.uses_equality,
+                unique_names=self.unique_names,
+                goal=self.negated_goal,
             )
             return reason is None
-        if not set_of_support or not self.has_axioms:
+        if not set_of_support:
             return True
         # The additions are positive units: an M0 whose clauses all have a positive
         # literal stays satisfiable with them, any other only without them.
