@@ -21,10 +21,10 @@ from shared_bench import shared_bench
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
+from strips_framework.limits import Limits
 from strips_framework.pddl import find_domain, load_task
-from strips_framework.plugins import Registry
+from strips_framework.plugin.registry import Registry
 from strips_framework.result import Result
-from strips_framework.search.limits import Limits
 
 CONFIGS = [("lazy-gbfs", "ff"), ("gbfs", "ff"), ("astar", "lmcut"), ("breadth-first", "blind")]
 SCALING = ["gripper/task01", "gripper/task20", "logistics/task01", "logistics/task28"]

@@ -20,7 +20,7 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.task import GroundTask
 from strips_framework.pddl import find_domain, load_task
-from strips_framework.plugins import Registry
+from strips_framework.plugin.registry import Registry
 
 TASKS = ["blocks/task05", "logistics/task05", "gripper/task05"]
 STATES = 100

@@ -19,12 +19,12 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.capabilities import check_problem
-from strips_framework.config import Config
 from strips_framework.errors import StripsError
 from strips_framework.planner import Planner
-from strips_framework.plugins import Registry
-from strips_framework.problem import Problem
+from strips_framework.plugin.checks import check_problem
+from strips_framework.plugin.config import Config
+from strips_framework.plugin.registry import Registry
+from strips_framework.worldmodel.problem import Problem
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 TASKS = ["three-boxes", "robot-world/light", "robot-world/boxes", "robot-world/other-room"]

@@ -17,8 +17,8 @@ import tomli_w
 from shared_bench import shared_bench
 
 from strips_framework.bench.problems import find_domain
-from strips_framework.cli import main
-from strips_framework.plugins import Registry
+from strips_framework.cli.main import main
+from strips_framework.plugin.registry import Registry
 
 TASKS = ["blocks/task01", "gripper/task01"]
 REGISTRY = Registry.from_plugins()

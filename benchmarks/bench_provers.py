@@ -27,12 +27,18 @@ import pytest
 from attrs import evolve
 from strips_z3_prover import Z3Prover
 
-from strips_framework.config import Config
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
+from strips_framework.means_ends.goal_prover import GoalProver
 from strips_framework.planner import Planner
-from strips_framework.proving import GAVE_UP, ProofResult, ProofTask, TheoremProver, open_session
-from strips_framework.search.goal_prover import GoalProver
+from strips_framework.plugin.config import Config
+from strips_framework.worldmodel.proving import (
+    GAVE_UP,
+    ProofResult,
+    ProofTask,
+    TheoremProver,
+    open_session,
+)
 from strips_resolution_prover import ResolutionProver
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"

@@ -23,9 +23,9 @@ from pathlib import Path
 import pytest
 from robot_worlds import robot_world
 
-from strips_framework.config import Config
+from strips_framework.means_ends.goal_prover import GoalProver
 from strips_framework.planner import Planner
-from strips_framework.search.goal_prover import GoalProver
+from strips_framework.plugin.config import Config
 
 SIZES = (100, 1_000, 10_000, 100_000)
 #: The goal of ``examples/robot-world/five-goals.strips``.

@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.config import Config
 from strips_framework.pddl import PddlTask, load_task
 from strips_framework.planner import Planner
-from strips_framework.plugins import Registry
+from strips_framework.plugin.config import Config
+from strips_framework.plugin.registry import Registry
 
 PDDL_DATA = Path(__file__).parent / "pddl" / "data"
 

@@ -16,13 +16,13 @@ from strips_framework.capabilities import (
     declared,
     requirements,
 )
-from strips_framework.cli import main
-from strips_framework.config import Config
+from strips_framework.cli.main import main
 from strips_framework.errors import ConfigError, PluginError
-from strips_framework.hookspecs import hookimpl
 from strips_framework.planner import Planner
-from strips_framework.plugins import KINDS, Registry
-from strips_framework.proving import ProofResult, ProofTask
+from strips_framework.plugin.config import Config
+from strips_framework.plugin.hookspecs import hookimpl
+from strips_framework.plugin.registry import KINDS, Registry
+from strips_framework.worldmodel.proving import ProofResult, ProofTask
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 

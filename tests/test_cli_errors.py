@@ -15,8 +15,8 @@ import pytest
 
 from strips_evaluators.heuristics.ff import FFEstimator
 from strips_evaluators.paper import PaperEvaluator
-from strips_framework import exit_codes
-from strips_framework.cli import main
+from strips_framework.cli import exit_codes
+from strips_framework.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
 THREE_BOXES = ROOT / "examples" / "three-boxes.strips"
@@ -98,7 +98,7 @@ def test_an_exception_inside_a_plugin_names_the_plugin_with_its_own_exit_code(ca
 
 
 def test_an_exception_in_the_core_is_not_blamed_on_a_plugin(monkeypatch):
-    from strips_framework.search.means_ends_run import MeansEndsRun
+    from strips_framework.means_ends.run import MeansEndsRun
 
     monkeypatch.setattr(MeansEndsRun, "search", lambda self: 1 / 0)
     with pytest.raises(ZeroDivisionError):
@@ -117,7 +117,7 @@ def broken_distribution(tmp_path, monkeypatch):
         "[strips_framework]\nbroken = strips_broken_missing_module\nmisspelled = strips_misspelled\n"
     )
     (site / "strips_misspelled.py").write_text(textwrap.dedent("""
-        from strips_framework.hookspecs import hookimpl
+        from strips_framework.plugin.hookspecs import hookimpl
 
         @hookimpl
         def strips_register_provrs():

@@ -4,11 +4,11 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.config import Config
 from strips_framework.errors import ConfigError
+from strips_framework.means_ends.strategy import MeansEndsSearch
 from strips_framework.planner import Planner
-from strips_framework.plugins import Registry, get_plugin_manager
-from strips_framework.search.means_ends import MeansEndsSearch
+from strips_framework.plugin.config import Config
+from strips_framework.plugin.registry import Registry, get_plugin_manager
 
 
 @pytest.fixture(scope="module")

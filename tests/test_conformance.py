@@ -2,7 +2,7 @@
 strategy (world-model and ground-task ones): the
 builtins, the plugins of this repository and whatever else is installed (z3, say)."""
 
-from strips_framework.plugins import Registry
+from strips_framework.plugin.registry import Registry
 from strips_framework.testing import (
     EvaluatorConformance,
     GroundStrategyConformance,

@@ -24,14 +24,14 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from strips_eprover_prover import EProver
 from strips_z3_prover import Z3Prover
 
+from strips_eprover_prover import EProver
 from strips_framework.formats.tptp import load_tptp, szs_status
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param
 from strips_framework.logic.unify import substitute
-from strips_framework.proving import (
+from strips_framework.worldmodel.proving import (
     GAVE_UP,
     PROVED,
     SATURATED,
@@ -40,7 +40,7 @@ from strips_framework.proving import (
     ProofTask,
     open_session,
 )
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 
 DEFAULT_EXAMPLES = 300

@@ -9,11 +9,11 @@ import sys
 import textwrap
 from pathlib import Path
 
-from strips_framework import entry_points
+from strips_framework.plugin import entry_points
 
 SCRIPT = """
 import sys
-from strips_framework.plugins import Registry, get_plugin_manager
+from strips_framework.plugin.registry import Registry, get_plugin_manager
 registry = Registry(get_plugin_manager(load_entrypoints=True))
 print(",".join(registry.names("heuristic")))
 print(registry.get("evaluator", "paper").distribution)
@@ -39,7 +39,7 @@ def fake_distribution(folder: Path) -> None:
     (folder / "fake_heuristics.py").write_text(
         textwrap.dedent(
             """
-            from strips_framework.hookspecs import hookimpl
+            from strips_framework.plugin.hookspecs import hookimpl
 
             class Fake:
                 name = "fake"

@@ -6,9 +6,9 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from strips_framework.config import Config
+from strips_framework.limits import Limits
 from strips_framework.planner import Planner
-from strips_framework.search.limits import Limits
+from strips_framework.plugin.config import Config
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "configs" / "paper.toml"
 

@@ -12,7 +12,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "plugins"
-CLI = "import sys; from strips_framework.cli import main; sys.exit(main())"
+CLI = "import sys; from strips_framework.cli.main import main; sys.exit(main())"
 
 
 @pytest.fixture(scope="module")

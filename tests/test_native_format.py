@@ -6,12 +6,12 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework import builtins
 from strips_framework.errors import InputError
 from strips_framework.formats.native import NativeLoader
 from strips_framework.logic.formulas import And, Atomic, Exists, Var, formula_to_str
 from strips_framework.logic.terms import Param
-from strips_framework.problem import DerivedFact, OperatorSchema, SourceSpan
+from strips_framework.plugin import builtins
+from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, SourceSpan
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.cli import main
-from strips_framework.report import SCHEMA
+from strips_framework.cli.main import main
+from strips_framework.cli.report import SCHEMA
 
 ROOT = Path(__file__).resolve().parents[1]
 DOC = (ROOT / "docs" / "output.md").read_text()

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.simulate import replay
+from strips_framework.worldmodel.simulate import replay
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 

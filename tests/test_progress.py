@@ -10,7 +10,7 @@ from pathlib import Path
 
 import attrs
 
-from strips_framework.cli import main
+from strips_framework.cli.main import main
 from strips_framework.planner import Planner
 from strips_framework.progress import Progress
 

@@ -4,7 +4,7 @@ import pytest
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
-from strips_framework.proving import ProofTask
+from strips_framework.worldmodel.proving import ProofTask
 
 GOAL = [Clause([(False, ("P", Param("m")))])]
 

@@ -3,10 +3,10 @@
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic
 from strips_framework.logic.terms import Param
-from strips_framework.problem import OperatorSchema
-from strips_framework.relevance import AddListRelevance
-from strips_framework.search.node import Difference
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.means_ends.node import Difference
+from strips_framework.means_ends.relevance import AddListRelevance
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 k, m, n = Param("k"), Param("m"), Param("n")
 GOTO = OperatorSchema("goto", [m, n], Atomic(("ATR", m)), [("ATR", n)], [("ATR", m)])

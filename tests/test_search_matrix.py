@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.plugins import Registry
-from strips_framework.simulate import replay
+from strips_framework.plugin.registry import Registry
+from strips_framework.worldmodel.simulate import replay
 
 DATA = Path(__file__).resolve().parent / "data"
 REGISTRY = Registry.from_plugins()

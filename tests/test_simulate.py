@@ -19,9 +19,9 @@ from strips_framework.logic.formulas import (
     Or,
     Var,
 )
-from strips_framework.logic.terms import Param
-from strips_framework.problem import WILDCARD, DerivedFact, OperatorSchema, Problem
-from strips_framework.simulate import SimulationError, replay
+from strips_framework.logic.terms import WILDCARD, Param
+from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem
+from strips_framework.worldmodel.simulate import SimulationError, replay
 
 x, y, z = Var("x"), Var("y"), Var("z")
 k, l, m, n = Param("k"), Param("l"), Param("m"), Param("n")

@@ -18,12 +18,11 @@ from strips_framework.capabilities import (
     SOUND,
 )
 from strips_framework.formats.native import NativeLoader
+from strips_framework.forward.result import ForwardStatistics
 from strips_framework.grounding.task import GroundTask
 from strips_framework.logic.terms import Param
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
+from strips_framework.means_ends.node import Node
 from strips_framework.result import Result, Status
-from strips_framework.search.forward.result import ForwardStatistics
-from strips_framework.search.node import Node
 from strips_framework.testing import (
     CASES,
     TASKS,
@@ -44,6 +43,7 @@ from strips_framework.testing import (
 from strips_framework.testing.ground_search_checks import ground_planner
 from strips_framework.testing.ground_tasks import task_space
 from strips_framework.testing.search_checks import state_space
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
 
 pytest_plugins = ["pytester"]
 CASE = {case.name: case for case in CASES}
@@ -165,7 +165,7 @@ def test_one_line_in_a_plugins_tests_runs_the_kit_and_reports_failures(pytester)
     pytester.makepyfile(test_broken=textwrap.dedent("""
         from typing import ClassVar
         from attrs import frozen
-        from strips_framework.proving import ProofResult
+        from strips_framework.worldmodel.proving import ProofResult
         from strips_framework.testing import ProverConformance
 
         @frozen

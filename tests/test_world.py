@@ -3,9 +3,9 @@
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import Atomic
 from strips_framework.logic.terms import Param
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import OperatorSchema
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 
 def unit(*atom):

@@ -20,8 +20,8 @@ __version__ = "0.1.0"
 #: The public API by name, with the module that defines it.
 _API = {
     "Planner": "strips_framework.planner",
-    "Config": "strips_framework.config",
-    "Limits": "strips_framework.search.limits",
+    "Config": "strips_framework.plugin.config",
+    "Limits": "strips_framework.limits",
     "Result": "strips_framework.result",
     "Status": "strips_framework.result",
 }

@@ -19,24 +19,24 @@ from typing import TYPE_CHECKING, Any
 import attrs
 from attrs import frozen
 
-from strips_framework.capabilities import check_combination, check_problem
-from strips_framework.config import Config
 from strips_framework.errors import ConfigError, InputError
+from strips_framework.limits import Clock
+from strips_framework.pddl.files import is_pddl
+from strips_framework.plugin.checks import check_combination, check_problem
+from strips_framework.plugin.config import Config
+from strips_framework.plugin.registry import Registry
 from strips_framework.user_files import is_file
-from strips_framework.plugins import Registry
-from strips_framework.search.limits import Clock
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
     from strips_framework.macrops.macrop import Library
     from strips_framework.pddl import PddlTask
-    from strips_framework.problem import Problem
     from strips_framework.progress import Progress
-    from strips_framework.proving import TheoremProver
     from strips_framework.result import Result
+    from strips_framework.worldmodel.problem import Problem
+    from strips_framework.worldmodel.proving import TheoremProver
 
 GROUND_STRATEGY = "ground-strategy"
-PDDL_SUFFIX = ".pddl"
 
 
 @frozen
@@ -100,7 +100,7 @@ class Planner:
 
     def for_pddl(self) -> Planner:
         """The planner for PDDL input: the config's, with the strategy defaulting to
-        lazy greedy search (:data:`~strips_framework.config.PDDL_DEFAULT_STRATEGY`) unless
+        lazy greedy search (:data:`~strips_framework.plugin.config.PDDL_DEFAULT_STRATEGY`) unless
         the config chose one, as ``strips solve`` does."""
         config = self.config.for_pddl()
         if config is self.config:
@@ -243,8 +243,3 @@ def _read_library(path: Path | None, problem: Problem) -> Library | None:
     from strips_framework.macrops.library_file import read_library
 
     return read_library(path, problem)
-
-
-def is_pddl(problem_path: Path, domain_path: Path | None = None) -> bool:
-    """True for PDDL input: a domain is given, or the problem file ends in ``.pddl``."""
-    return domain_path is not None or problem_path.suffix.lower() == PDDL_SUFFIX

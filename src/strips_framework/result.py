@@ -3,8 +3,8 @@ one result type.
 
 The two families (means-ends and model-A* over first-order world models; forward search
 over ground tasks) count different things, so each keeps its own statistics record
-(:class:`~strips_framework.search.result.WorldModelStatistics`,
-:class:`~strips_framework.search.forward.result.ForwardStatistics`), nested in the one
+(:class:`~strips_framework.means_ends.result.WorldModelStatistics`,
+:class:`~strips_framework.forward.result.ForwardStatistics`), nested in the one
 :class:`Result`; the status, the plan, its cost and the run's time mean the same for both.
 """
 
@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, ClassVar, Protocol
 from attrs import frozen
 
 if TYPE_CHECKING:
-    from strips_framework.search.result import Tree
+    from strips_framework.means_ends.result import Tree
 
 
 class Status(enum.StrEnum):

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from strips_framework.bench import anchors
-from strips_framework.cli import main
+from strips_framework.cli.main import main
 
 from .conftest import read_rows
 

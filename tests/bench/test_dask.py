@@ -17,7 +17,7 @@ import pytest
 pytest.importorskip("distributed")
 from distributed import Client
 
-from strips_framework.cli import main
+from strips_framework.cli.main import main
 
 from .conftest import PUSH_ONE_BOX, THREE_BOXES, fake, read_rows
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from strips_framework.cli import main
-from strips_framework.plugins import Registry
+from strips_framework.cli.main import main
+from strips_framework.plugin.registry import Registry
 
 from .conftest import PUSH_ONE_BOX, ROOT, read_rows
 

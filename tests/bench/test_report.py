@@ -7,7 +7,7 @@ from xml.etree import ElementTree
 
 import pytest
 
-from strips_framework.cli import main
+from strips_framework.cli.main import main
 
 
 def row(problem, config, status, time=None, expanded=None, length=None, proving=None,

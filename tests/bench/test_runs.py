@@ -9,7 +9,7 @@ import tomllib
 from collections import Counter
 
 from strips_framework.bench.configs import PlannerConfig, RunFiles, strips_command
-from strips_framework.cli import main
+from strips_framework.cli.main import main
 
 from .conftest import PUSH_ONE_BOX, ROOT, THREE_BOXES, fake, read_rows
 

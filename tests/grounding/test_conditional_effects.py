@@ -10,11 +10,11 @@ from __future__ import annotations
 import pytest
 
 from strips_framework.errors import InputError
+from strips_framework.forward.space import StateSpace
 from strips_framework.grounding import ground
 from strips_framework.pddl import to_problem
 from strips_framework.pddl.formulas import And, Atom, Not
 from strips_framework.pddl.validate import validate_plan
-from strips_framework.search.forward.space import StateSpace
 
 #: Each task with the length of its shortest plan (found by breadth-first search).
 TASKS = [

@@ -11,8 +11,8 @@ import pytest
 from strips_framework.macrops.generalize import Generalized, generalize
 from strips_framework.macrops.ground_table import GroundTable, ground_table, solution_steps
 from strips_framework.planner import Planner
-from strips_framework.problem import Problem
-from strips_framework.simulate import State
+from strips_framework.worldmodel.problem import Problem
+from strips_framework.worldmodel.simulate import State
 
 ROBOT_WORLD = Path(__file__).parents[2] / "examples" / "robot-world"
 TASKS = ("light", "boxes", "other-room")

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ElementTree
 
-from strips_framework.cli import main
+from strips_framework.cli.main import main
 
 from .conftest import ROBOT_WORLD
 

@@ -14,7 +14,7 @@ from strips_framework.macrops.generalize import generalize
 from strips_framework.macrops.ground_table import ground_table, parse_plan
 from strips_framework.macrops.kernels import counterexamples, instances
 from strips_framework.macrops.proofs import MacroError
-from strips_framework.simulate import Simulator
+from strips_framework.worldmodel.simulate import Simulator
 
 from .conftest import TASKS, random_states
 

@@ -7,12 +7,12 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_framework.config import Config
-from strips_framework.hookspecs import hookimpl
 from strips_framework.macrops.learning import learn_sequence
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import TriangleTable
 from strips_framework.planner import Planner
+from strips_framework.plugin.config import Config
+from strips_framework.plugin.hookspecs import hookimpl
 
 from .conftest import ROBOT_WORLD
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
-from strips_framework.config import Config
 from strips_framework.grounding import ground
 from strips_framework.macrops.forward import expand, with_macros
 from strips_framework.macrops.learning import TriangleTableLearner, learn_sequence
@@ -15,6 +14,7 @@ from strips_framework.macrops.macrop import Library
 from strips_framework.pddl import load_task, to_problem
 from strips_framework.pddl.validate import validate_plan
 from strips_framework.planner import Planner
+from strips_framework.plugin.config import Config
 
 BLOCKS = Path(__file__).parents[2] / "examples" / "pddl" / "blocksworld"
 FORWARD = {"strategy": "lazy-gbfs"}

@@ -8,7 +8,7 @@ import pytest
 from strips_framework.macrops.learning import TriangleTableLearner, learn_sequence
 from strips_framework.macrops.macrop import Library
 from strips_framework.planner import Planner
-from strips_framework.simulate import replay
+from strips_framework.worldmodel.simulate import replay
 
 from .conftest import ROBOT_WORLD
 

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework import exit_codes
-from strips_framework.cli import main
+from strips_framework.cli import exit_codes
+from strips_framework.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[2]
 BLOCKS = ROOT / "examples" / "pddl" / "blocksworld"
@@ -117,7 +117,7 @@ def test_too_many_files_is_a_usage_error(capsys):
 def test_same_output_whatever_the_hash_seed(config_path):
     def run(seed: str) -> str:
         env = {**os.environ, "PYTHONHASHSEED": seed}
-        script = "import sys; from strips_framework.cli import main; sys.exit(main())"
+        script = "import sys; from strips_framework.cli.main import main; sys.exit(main())"
         command = [sys.executable, "-c", script, "solve", str(BLOCKS / "p4.pddl"),
                    "--config", str(config_path), "--json"]
         done = subprocess.run(command, env=env, capture_output=True, text=True, check=True)

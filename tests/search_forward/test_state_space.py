@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
+from strips_framework.forward.openlists import AlternationOpenList, BestFirstOpenList
+from strips_framework.forward.space import NO_PARENT, StateSpace
+from strips_framework.forward.successors import SuccessorGenerator
 from strips_framework.grounding.task import GroundAxiom, GroundTask
-from strips_framework.search.forward.openlists import AlternationOpenList, BestFirstOpenList
-from strips_framework.search.forward.space import NO_PARENT, StateSpace
-from strips_framework.search.forward.successors import SuccessorGenerator
 
 
 def reachable(task: GroundTask) -> set[int]:

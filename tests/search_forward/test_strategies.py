@@ -8,12 +8,12 @@ from pathlib import Path
 
 import pytest
 
+from strips_framework.forward.budget import Budget
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
+from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.pddl import find_domain, load_task
 from strips_framework.result import Result
-from strips_framework.search.forward.budget import Budget
-from strips_framework.search.limits import Clock, LimitReached, Limits
 
 STRATEGIES = ["astar", "wastar", "gbfs", "lazy-gbfs", "ehc", "breadth-first"]
 COMPLETE = [s for s in STRATEGIES if s != "ehc"]
@@ -147,8 +147,8 @@ def test_lazy_search_boosts_on_each_new_best_h_but_not_at_the_initial_state(
     registry, tasks, monkeypatch
 ):
     """As Fast Downward: the initial state's h only sets the mark to beat."""
-    from strips_framework.search.forward import lazy
-    from strips_framework.search.forward.openlists import AlternationOpenList
+    from strips_framework.forward import lazy
+    from strips_framework.forward.openlists import AlternationOpenList
 
     boosts = []
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import shutil
 
 import pytest
-from strips_eprover_prover import EProver
 
+from strips_eprover_prover import EProver
 from strips_framework.testing import ProverConformance
 
 pytestmark = pytest.mark.skipif(shutil.which("eprover") is None, reason="eprover not installed")

@@ -7,17 +7,17 @@ import shutil
 from pathlib import Path
 
 import pytest
+
 from strips_eprover_prover import EProver
 from strips_eprover_prover.residue import residue
-
-from strips_framework.config import Config
 from strips_framework.errors import PluginError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.planner import Planner
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofTask
-from strips_framework.simulate import replay
+from strips_framework.plugin.config import Config
 from strips_framework.testing.prover_cases import pigeonhole
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_framework.worldmodel.simulate import replay
 
 needs_e = pytest.mark.skipif(shutil.which("eprover") is None, reason="eprover not installed")
 M = Param("m")

@@ -10,10 +10,10 @@ from strips_framework.grounding.task import GroundAxiom, GroundOperator, GroundT
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Formula
 from strips_framework.logic.terms import Param
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import OperatorSchema
-from strips_framework.search.node import Difference, Goal, Node, RelevantInstance
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.means_ends.node import Difference, Goal, Node, RelevantInstance
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 M0 = WorldModel(InitialModel([]))
 STEP = OperatorSchema("step", [], Atomic(("READY",)), [("DONE",)], [])

@@ -1,5 +1,5 @@
 """Seeded random ground tasks for the heuristic tests: costs (zero included), negative
-preconditions, axioms and, on request, conditional effects. A plain module, which
+preconditions, axioms and, on request, conditional effects or a plain variant. A plain module, which
 pytest finds through ``pythonpath`` in the root pyproject.toml."""
 
 from __future__ import annotations
@@ -16,11 +16,13 @@ from strips_framework.grounding.task import (
 )
 
 
-def random_task(seed: int, conditional: bool = False) -> GroundTask:
+def random_task(seed: int, conditional: bool = False, plain: bool = False) -> GroundTask:
     """A small random task: 7 basic facts, 2 derived ones, 10 operators with costs 0..3;
     with ``conditional``, up to two conditional effects per operator (some of which add
-    nothing unconditionally)."""
+    nothing unconditionally). A ``plain`` task has unit costs and no negative conditions
+    (for the properties that hold only there); the same seed draws the same structure."""
     rng = random.Random(seed)
+    positive = (lambda facts: ()) if plain else tuple
     basic = list(range(7))
     derived = [7, 8]
     operators = []
@@ -28,7 +30,7 @@ def random_task(seed: int, conditional: bool = False) -> GroundTask:
         pre = tuple(rng.sample(basic + derived, rng.randint(0, 2)))
         add = tuple(rng.sample(basic, rng.randint(0 if conditional else 1, 2)))
         delete = tuple(f for f in rng.sample(basic, rng.randint(0, 2)) if f not in add)
-        pre_neg = tuple(f for f in rng.sample(basic, rng.randint(0, 1)) if f not in pre)
+        pre_neg = positive(f for f in rng.sample(basic, rng.randint(0, 1)) if f not in pre)
         effects = []
         for _ in range(rng.randint(0, 2) if conditional else 0):
             condition = tuple(rng.sample(basic + derived, rng.randint(1, 2)))
@@ -36,19 +38,20 @@ def random_task(seed: int, conditional: bool = False) -> GroundTask:
             effects.append(
                 GroundEffect(
                     condition,
-                    tuple(f for f in condition_neg if f not in condition),
+                    positive(f for f in condition_neg if f not in condition),
                     tuple(rng.sample(basic, 1)),
                     tuple(rng.sample(basic, rng.randint(0, 1))),
                 )
             )
         operators.append(
             GroundOperator(
-                f"(op{index})", pre, add, delete, rng.randint(0, 3), pre_neg, tuple(effects)
+                f"(op{index})", pre, add, delete, 1 if plain else rng.randint(0, 3), pre_neg,
+                tuple(effects),
             )
         )
     axioms = (
         GroundAxiom(7, tuple(rng.sample(basic, 2))),
-        GroundAxiom(8, tuple(rng.sample(basic, 1)), tuple(rng.sample(basic, 1))),
+        GroundAxiom(8, tuple(rng.sample(basic, 1)), positive(rng.sample(basic, 1))),
     )
     task = GroundTask(
         name=f"random{seed}",
@@ -58,9 +61,9 @@ def random_task(seed: int, conditional: bool = False) -> GroundTask:
         goal=tuple(rng.sample(basic + derived, rng.randint(1, 3))),
         axioms=axioms,
         derived=tuple(derived),
-        uses_costs=True,
+        uses_costs=not plain,
     )
     init = AxiomEvaluator(task).evaluate(mask_of(tuple(rng.sample(basic, rng.randint(1, 3)))))
     return GroundTask(
-        task.name, task.facts, task.operators, init, task.goal, axioms, task.derived, True
+        task.name, task.facts, task.operators, init, task.goal, axioms, task.derived, not plain
     )

@@ -13,20 +13,19 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from random_tasks import random_task
+from shared_bench import shared_bench
 
 from strips_evaluators.heuristics.exploration import PURE_PYTHON_SWITCH, explorer
 from strips_evaluators.heuristics.ff import FFHeuristic
 from strips_evaluators.heuristics.relaxation import relax
+from strips_framework.forward.eager import GreedySearch
+from strips_framework.forward.lazy import LazyGreedySearch
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
+from strips_framework.limits import Limits
 from strips_framework.pddl import find_domain, load_task
-from strips_framework.search.forward.lazy import LazyGreedySearch
-from strips_framework.search.forward.eager import GreedySearch
-from strips_framework.search.limits import Limits
 from strips_framework.testing.ground_space import TaskSpace, TooLarge
-
-from random_tasks import random_task
-from shared_bench import shared_bench
 
 CORE_DATA = Path(__file__).resolve().parents[3] / "tests" / "pddl" / "data"
 LOCAL = [

@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 
 import pytest
+from random_tasks import random_task
+from shared_bench import shared_bench
 
 from strips_evaluators import plugin
 from strips_evaluators.heuristics.exploration import (
@@ -21,14 +23,10 @@ from strips_evaluators.heuristics.exploration import (
 from strips_evaluators.heuristics.relaxation import RelaxedTask, relax
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
+from strips_framework.limits import Limits
 from strips_framework.pddl import find_domain, load_task
-from strips_framework.plugins import Registry
-from strips_framework.search.limits import Limits
+from strips_framework.plugin.registry import Registry
 from strips_framework.testing.ground_space import TaskSpace
-
-from random_tasks import random_task
-from shared_bench import shared_bench
-
 
 IPC = shared_bench("ipc")  # without it the IPC cases skip
 PDDL_DOMAINS = ["blocks", "gripper", "depot", "zenotravel", "transport", "miconic", "pegsol"]
@@ -48,8 +46,13 @@ def optimal_costs(task: GroundTask) -> dict[int, float]:
     return TaskSpace(task, max_states=1_000_000).cost_to_go
 
 
-TASKS = [
+#: Unit-cost tasks without negative conditions (the IPC first tasks are such).
+PLAIN_TASKS = [
     *(f"ipc:{domain}" for domain in PDDL_DOMAINS),
+    *(f"plain:{seed}" for seed in range(20)),
+]
+TASKS = [
+    *PLAIN_TASKS,
     *(f"random:{seed}" for seed in range(40)),
     *(f"conditional:{seed}" for seed in range(40)),
 ]
@@ -61,7 +64,7 @@ def task_and_costs(request) -> tuple[GroundTask, dict[int, float]]:
     if kind == "ipc":
         task = ipc_task(name)
     else:
-        task = random_task(int(name), conditional=kind == "conditional")
+        task = random_task(int(name), conditional=kind == "conditional", plain=kind == "plain")
     return task, optimal_costs(task)
 
 
@@ -113,23 +116,23 @@ def test_preferred_operators_are_applicable_and_come_with_the_estimate(task_and_
             assert all(task.operators[i].applicable(state) for i in preferred), name
 
 
+@pytest.mark.parametrize("task_and_costs", PLAIN_TASKS, indirect=True)
 def test_ff_prefers_some_operator_unless_at_a_goal_or_dead_end(task_and_costs) -> None:
-    """Without negative preconditions, a relaxed plan always starts with an operator that
+    """Without negative conditions, a relaxed plan always starts with an operator that
     is applicable in the state."""
     task, optimal = task_and_costs
-    if any(op.pre_neg or any(e.condition_neg for e in op.effects) for op in task.operators):
-        pytest.skip("negative conditions can block every relaxed-plan operator")
+    assert not any(op.pre_neg or any(e.condition_neg for e in op.effects) for op in task.operators)
     estimator = HEURISTICS["ff"]().for_task(task)
     for state in optimal:
         value, preferred = estimator.estimate_with_preferred(state)
         assert bool(preferred) == (0 < value < math.inf)
 
 
+@pytest.mark.parametrize("task_and_costs", PLAIN_TASKS, indirect=True)
 def test_unit_cost_layers_agree_with_the_dijkstra_exploration(task_and_costs) -> None:
     task, optimal = task_and_costs
     relaxed = relax(task)
-    if not relaxed.unit_cost:
-        pytest.skip("not a unit-cost task")
+    assert relaxed.unit_cost
     unused = [0] * len(relaxed.pre)
     for state in optimal:
         cost = max_exploration(relaxed, state, relaxed.cost, unused, unused[:])
@@ -142,10 +145,7 @@ def test_astar_with_an_admissible_heuristic_finds_optimal_plans(task_and_costs, 
     """A* (the search helper's, from the registry) with each admissible heuristic returns
     a plan of the optimal cost, or proves the task unsolvable."""
     task, optimal = task_and_costs
-    registry = Registry.from_plugins()
-    if "astar" not in registry.names("ground-strategy"):
-        pytest.skip("no forward A* strategy registered")
-    strategy = registry.get("ground-strategy", "astar").cls()
+    strategy = Registry.from_plugins().get("ground-strategy", "astar").cls()
     estimator = HEURISTICS[heuristic]().for_task(task)
     result = strategy.search_task(task, estimator, Limits(time=60))
     if optimal[task.init] == math.inf:

@@ -6,8 +6,8 @@ import attrs
 import pluggy
 
 from strips_evaluators import plugin
-from strips_framework import hookspecs
-from strips_framework.search.components import evaluator_for_problem
+from strips_framework.means_ends.components import evaluator_for_problem
+from strips_framework.plugin import hookspecs
 
 
 def test_hook_returns_every_evaluator_with_a_unique_name_and_docs() -> None:

@@ -10,11 +10,11 @@ from strips_evaluators.relaxed_plan import RelaxedPlanEvaluator
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
 from strips_framework.logic.terms import Param
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import OperatorSchema
-from strips_framework.search.components import evaluator_for_problem
-from strips_framework.search.node import Goal, Node
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.means_ends.components import evaluator_for_problem
+from strips_framework.means_ends.node import Goal, Node
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 X, Y = Param("x"), Param("y")
 #: go(x, y): from x to a connected y; it also lights y (one achiever, two atoms).

@@ -7,7 +7,7 @@ from attrs.exceptions import FrozenInstanceError
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
 from strips_resolution_prover import ResolutionProver
 
 M, N = Param("m"), Param("n")

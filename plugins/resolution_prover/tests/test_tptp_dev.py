@@ -15,7 +15,7 @@ import pytest
 from strips_framework.formats.tptp import load_tptp, szs_answers, szs_status
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.unify import substitute
-from strips_framework.proving import ProofTask
+from strips_framework.worldmodel.proving import ProofTask
 from strips_resolution_prover import ResolutionProver
 
 EFFORT = 400

@@ -19,7 +19,7 @@ from strips_framework.logic.formulas import (
     Var,
 )
 from strips_framework.logic.terms import Param
-from strips_framework.proving import ProofResult
+from strips_framework.worldmodel.proving import ProofResult
 from strips_resolution_prover import ResolutionProver
 
 X, Y = Var("X"), Var("Y")

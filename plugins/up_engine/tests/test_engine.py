@@ -9,12 +9,13 @@ from pathlib import Path
 
 import pytest
 import unified_planning.test.examples as up_examples
-import up_strips
 from unified_planning.engines import PlanGenerationResultStatus as UpStatus
 from unified_planning.engines import ValidationResultStatus
 from unified_planning.exceptions import UPUsageError
 from unified_planning.io import PDDLReader
 from unified_planning.shortcuts import OneshotPlanner, PlanValidator, get_environment
+
+import up_strips
 
 ROOT = Path(__file__).resolve().parents[3]
 BLOCKS = ROOT / "examples" / "pddl" / "blocksworld"

@@ -7,14 +7,14 @@ from pathlib import Path
 import pytest
 from strips_z3_prover import Z3Prover
 
-from strips_framework.config import Config
 from strips_framework.errors import ConfigError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.planner import Planner
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofTask
-from strips_framework.simulate import replay
+from strips_framework.plugin.config import Config
 from strips_framework.testing.prover_cases import pigeonhole
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_framework.worldmodel.simulate import replay
 
 M, N = Param("m"), Param("n")
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"

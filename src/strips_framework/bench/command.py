@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from strips_framework import exit_codes
+from strips_framework.cli import exit_codes
 from strips_framework.errors import ConfigError, StripsError
 
 if TYPE_CHECKING:
@@ -114,9 +114,9 @@ def bench(args: argparse.Namespace) -> int:
 
 def _quick_matrix(args: argparse.Namespace) -> Matrix:
     from strips_framework.bench.matrix import Matrix
-    from strips_framework.config import Config
+    from strips_framework.plugin.config import Config
+    from strips_framework.plugin.registry import Registry
     from strips_framework.user_files import is_file
-    from strips_framework.plugins import Registry
 
     """The matrix the quick form's options describe: its problems, the product of the
     named (or, with --all, every registered) strategies, evaluators and provers; --all

@@ -25,7 +25,7 @@ from strips_framework.bench.problems import PDDL, ProblemFile
 
 #: ``strips`` in the child's interpreter, found without relying on PATH (a Dask worker's
 #: PATH need not hold the virtual environment).
-STRIPS = ("-c", "import sys; from strips_framework.cli import main; sys.exit(main())")
+STRIPS = ("-c", "import sys; from strips_framework.cli.main import main; sys.exit(main())")
 PLACEHOLDERS = ("python", "problem", "domain", "plan", "folder")
 
 
@@ -100,7 +100,7 @@ class PlannerConfig(AnyProblemConfig):
 @cache
 def ground_strategy_names() -> frozenset[str]:
     """The registered ground-task strategies (looked up once per process)."""
-    from strips_framework.plugins import Registry
+    from strips_framework.plugin.registry import Registry
 
     return frozenset(Registry.from_plugins().names("ground-strategy"))
 

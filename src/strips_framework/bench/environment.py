@@ -10,7 +10,7 @@ import socket
 import sys
 from importlib import metadata
 
-from strips_framework.hookspecs import PROJECT
+from strips_framework.plugin.hookspecs import PROJECT
 
 CORE = "strips-framework"
 

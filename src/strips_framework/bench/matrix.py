@@ -37,12 +37,12 @@ from strips_framework.bench.configs import (
     PlannerConfig,
 )
 from strips_framework.bench.problems import ProblemFile, expand_problem_set
-from strips_framework.config import COMPONENTS, DEFAULT_CHOICES, Config
 from strips_framework.errors import ConfigError, InputError, StripsError
-from strips_framework.user_files import read_toml
+from strips_framework.limits import MAX_MEMORY, MAX_TIME
 from strips_framework.planner import Planner
-from strips_framework.plugins import Registry
-from strips_framework.search.limits import MAX_MEMORY, MAX_TIME
+from strips_framework.plugin.config import COMPONENTS, DEFAULT_CHOICES, Config
+from strips_framework.plugin.registry import Registry
+from strips_framework.user_files import read_toml
 
 PRODUCT_KINDS = (*COMPONENTS, "heuristic")
 TOP_KEYS = ("repetitions", "seed", "limits", "problems", "product", "configs")

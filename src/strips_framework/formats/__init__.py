@@ -1,11 +1,11 @@
-"""Problem loaders: files in, :class:`~strips_framework.problem.Problem` out."""
+"""Problem loaders: files in, :class:`~strips_framework.worldmodel.problem.Problem` out."""
 
 from __future__ import annotations
 
 from pathlib import Path
 from typing import ClassVar, Protocol
 
-from strips_framework.problem import Problem
+from strips_framework.worldmodel.problem import Problem
 
 
 class ProblemLoader(Protocol):

@@ -28,11 +28,11 @@ from typing import ClassVar, NamedTuple
 from attrs import frozen
 
 from strips_framework.errors import InputError
-from strips_framework.user_files import read_text
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of
-from strips_framework.problem import DerivedFact, OperatorSchema, Problem, SourceSpan
+from strips_framework.user_files import read_text
+from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem, SourceSpan
 
 #: Blocks whose indented lines are separate entries; the others continue their first line.
 SECTIONS = ("facts", "axioms", "derived", "operator")

@@ -22,7 +22,6 @@ from pathlib import Path
 from attrs import frozen
 
 from strips_framework.errors import InputError
-from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
 from strips_framework.logic.formulas import (
@@ -40,7 +39,8 @@ from strips_framework.logic.formulas import (
     substitute_free,
 )
 from strips_framework.logic.terms import EQUALITY, Param, Term
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
+from strips_framework.user_files import MAX_NESTING, read_text
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
 
 AXIOM_ROLES = frozenset(
     {"axiom", "hypothesis", "definition", "lemma", "theorem", "assumption", "plain", "unknown"}

@@ -36,13 +36,11 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection, Iterable, Mapping
-
 from typing import NamedTuple
 
 from attrs import define, field
 
 from strips_framework.errors import InputError
-from strips_framework.user_files import MAX_NESTING
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -56,8 +54,8 @@ from strips_framework.logic.formulas import (
     Truth,
     Var,
 )
-from strips_framework.logic.terms import EQUALITY, Atom, Param, Term
-from strips_framework.problem import WILDCARD
+from strips_framework.logic.terms import EQUALITY, WILDCARD, Atom, Param, Term
+from strips_framework.user_files import MAX_NESTING
 
 _TOKEN = re.compile(
     r"""

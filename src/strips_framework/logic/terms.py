@@ -24,6 +24,10 @@ SKOLEM_PREFIX = "sk!"
 
 EQUALITY = "="
 
+#: In a delete-list atom, ``$`` matches any term: ``FACING($)`` deletes every FACING atom.
+#: (A world-model notion, defined here because the formula parser reads it.)
+WILDCARD = "$"
+
 
 @frozen(order=True, cache_hash=True)
 class Param:

@@ -12,8 +12,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from strips_framework.macrops.table import Step
-from strips_framework.problem import Problem
-from strips_framework.simulate import Simulator, State
+from strips_framework.worldmodel.problem import Problem
+from strips_framework.worldmodel.simulate import Simulator, State
 
 
 def eliminate(problem: Problem, steps: Sequence[Step]) -> list[Step]:

@@ -24,9 +24,9 @@ from strips_framework.macrops.proofs import MacroError
 from strips_framework.macrops.table import TriangleTable
 
 if TYPE_CHECKING:
+    from strips_framework.limits import Clock
     from strips_framework.planner import Planner
     from strips_framework.result import Result
-    from strips_framework.search.limits import Clock
 
 #: Macro operator names start with this, so that plans can be expanded.
 MACRO_PREFIX = "(macrop "

@@ -25,13 +25,12 @@ import itertools
 from attrs import frozen
 
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Or
-from strips_framework.logic.terms import Atom, Param, Term
+from strips_framework.logic.terms import WILDCARD, Atom, Param, Term
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.macrops.ground_table import GroundTable
 from strips_framework.macrops.proofs import DERIVED, FACT, Derivation, MacroError, Witness
 from strips_framework.macrops.table import Cell, Distinct, Step, TriangleTable
-from strips_framework.problem import WILDCARD
-from strips_framework.simulate import Simulator, ground_term
+from strips_framework.worldmodel.simulate import Simulator, ground_term
 
 
 @frozen

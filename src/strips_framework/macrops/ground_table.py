@@ -15,10 +15,10 @@ from attrs import frozen
 from strips_framework.logic.terms import Atom, Param, Term
 from strips_framework.macrops.proofs import Justifier, MacroError, Witness
 from strips_framework.macrops.table import Cell, Step, TriangleTable
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import Problem
 from strips_framework.result import Result
-from strips_framework.simulate import Simulator, State
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import Problem
+from strips_framework.worldmodel.simulate import Simulator, State
 
 
 @frozen

@@ -15,7 +15,7 @@ from collections.abc import Iterator, Sequence
 from strips_framework.logic.terms import Atom, Param, Term
 from strips_framework.logic.unify import substitute
 from strips_framework.macrops.table import TriangleTable
-from strips_framework.simulate import Simulator, State, match_pattern
+from strips_framework.worldmodel.simulate import Simulator, State, match_pattern
 
 Binding = dict[Param, Term]
 

@@ -20,7 +20,7 @@ from strips_framework.macrops.generalize import generalize
 from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import Step
-from strips_framework.problem import Problem
+from strips_framework.worldmodel.problem import Problem
 
 if TYPE_CHECKING:
     from strips_framework.planner import Planner
@@ -87,7 +87,7 @@ def solve_with(
     operators); the problem as a first-order one, the result and the plan's steps."""
     from strips_framework.macrops.forward import solve_with_macros
     from strips_framework.macrops.ground_table import parse_plan, solution_steps
-    from strips_framework.planner import is_pddl
+    from strips_framework.pddl.files import is_pddl
 
     macrops = library if library.macrops else None
     if not is_pddl(path, domain):
@@ -110,8 +110,8 @@ def solve_with(
 
 def _figures(result: Result) -> tuple[int, float, int]:
     """Nodes (forward search: expansions), seconds, and MACROPs on the solution path."""
-    from strips_framework.search.forward.result import ForwardStatistics
-    from strips_framework.search.result import WorldModelStatistics
+    from strips_framework.forward.result import ForwardStatistics
+    from strips_framework.means_ends.result import WorldModelStatistics
 
     statistics = result.statistics
     if isinstance(statistics, ForwardStatistics):

@@ -38,7 +38,7 @@ from strips_framework.logic.parser import WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, Term, atom_to_str, term_to_str
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import Cell, Distinct, Step, TriangleTable
-from strips_framework.problem import OperatorSchema, Problem
+from strips_framework.worldmodel.problem import OperatorSchema, Problem
 
 HEADER = "# MACROP library (Fikes, Hart & Nilsson 1972): written by 'strips learn'"
 

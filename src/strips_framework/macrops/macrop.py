@@ -16,7 +16,7 @@ from attrs import field, frozen
 
 from strips_framework.logic.terms import Param, Term
 from strips_framework.macrops.table import TriangleTable
-from strips_framework.simulate import ground_term
+from strips_framework.worldmodel.simulate import ground_term
 
 
 @frozen

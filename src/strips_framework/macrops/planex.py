@@ -8,7 +8,7 @@ executed next. When an action fails or the world changes, that kernel is a lower
 steps are *skipped*). When no kernel holds, PLANEX *replans* from the world as it is, with
 the same planner and library, and monitors the new plan's table.
 
-The world here is the simulator's (:mod:`strips_framework.simulate`) with a seeded
+The world here is the simulator's (:mod:`strips_framework.worldmodel.simulate`) with a seeded
 :class:`FaultModel`: an action fails (has no effect) with probability ``failure``; after a
 step, with probability ``disturbance``, someone else acts: a randomly chosen instance of
 an operator whose precondition holds is applied.
@@ -26,8 +26,8 @@ from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.kernels import holds
 from strips_framework.macrops.proofs import MacroError
 from strips_framework.macrops.table import Step, TriangleTable
-from strips_framework.problem import Problem
-from strips_framework.simulate import Simulator, State
+from strips_framework.worldmodel.problem import Problem
+from strips_framework.worldmodel.simulate import Simulator, State
 
 _probability = [validators.instance_of(float), validators.ge(0.0), validators.le(1.0)]
 

@@ -3,7 +3,7 @@
 A triangle table needs, for every step, the facts its precondition proof used; its
 generalization replays those proofs on lifted clauses (Fikes, Hart & Nilsson 1972). The
 proofs are found here by model checking on the simulator's semantics
-(:mod:`strips_framework.simulate`), not by the planner's prover, so that a table can be
+(:mod:`strips_framework.worldmodel.simulate`), not by the planner's prover, so that a table can be
 built for any valid plan (from means-ends or forward search, native or PDDL, or written by
 hand) and a proof is a small tree that can be replayed step by step:
 
@@ -36,7 +36,7 @@ from strips_framework.logic.formulas import (
     formula_to_str,
 )
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term
-from strips_framework.simulate import Env, Simulator, State, body_matches, ground_term
+from strips_framework.worldmodel.simulate import Env, Simulator, State, body_matches, ground_term
 
 FACT, DERIVED, RULE = "fact", "derived", "rule"
 

@@ -22,17 +22,17 @@ from attrs import field, frozen, validators
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Formula
-from strips_framework.logic.terms import Param, Term, is_ground
+from strips_framework.logic.terms import WILDCARD, Param, Term, is_ground
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.macrops.kernels import instances
 from strips_framework.macrops.macrop import Library
 from strips_framework.macrops.table import TriangleTable
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import WILDCARD, OperatorSchema
-from strips_framework.search.components import ProblemRelevance, RelevanceFilter
-from strips_framework.search.node import Difference, RelevantInstance
-from strips_framework.simulate import State
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.means_ends.components import ProblemRelevance, RelevanceFilter
+from strips_framework.means_ends.node import Difference, RelevantInstance
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.simulate import State
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 
 @frozen

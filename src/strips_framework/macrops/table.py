@@ -22,7 +22,7 @@ from attrs import field, frozen
 
 from strips_framework.logic.terms import Atom, Param, Term, term_to_str
 from strips_framework.logic.unify import substitute
-from strips_framework.problem import OperatorSchema
+from strips_framework.worldmodel.problem import OperatorSchema
 
 
 @frozen

@@ -6,11 +6,18 @@ import re
 from pathlib import Path
 
 from strips_framework.errors import InputError
-from strips_framework.user_files import is_file
 from strips_framework.pddl.domain_file import read_domain
 from strips_framework.pddl.problem_file import read_problem
 from strips_framework.pddl.sexpr import Source
 from strips_framework.pddl.task import PddlTask
+from strips_framework.user_files import is_file
+
+PDDL_SUFFIX = ".pddl"
+
+
+def is_pddl(problem_path: Path, domain_path: Path | None = None) -> bool:
+    """True for PDDL input: a domain is given, or the problem file ends in ``.pddl``."""
+    return domain_path is not None or problem_path.suffix.lower() == PDDL_SUFFIX
 
 
 def _source(path: Path) -> Source:

@@ -29,7 +29,7 @@ from strips_framework.logic import formulas as logic
 from strips_framework.logic.terms import Param
 from strips_framework.pddl import formulas as pddl
 from strips_framework.pddl.task import Action, DerivedPredicate, PddlTask, Predicate
-from strips_framework.problem import OperatorSchema, Problem
+from strips_framework.worldmodel.problem import OperatorSchema, Problem
 
 #: Term of a translated atom: a constant, an operator parameter or a quantified variable.
 Term = str | Param | logic.Var

@@ -44,9 +44,9 @@ from strips_framework.testing.search_checks import (
 )
 from strips_framework.testing.suites import (
     EvaluatorConformance,
+    GroundStrategyConformance,
     HeuristicConformance,
     ProverConformance,
-    GroundStrategyConformance,
     StrategyConformance,
 )
 

@@ -16,7 +16,7 @@ from typing import Any
 import attrs
 
 from strips_framework.capabilities import VOCABULARY, declared, requirements, unknown
-from strips_framework.plugins import KINDS
+from strips_framework.plugin.registry import KINDS
 
 
 class ConformanceFailure(AssertionError):

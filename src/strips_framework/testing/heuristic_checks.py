@@ -13,8 +13,8 @@ import math
 from collections.abc import Collection, Sequence
 
 from strips_framework.capabilities import ADMISSIBLE, PREFERRED_OPERATORS
+from strips_framework.forward.components import StateHeuristic
 from strips_framework.grounding.task import GroundTask
-from strips_framework.search.components import StateHeuristic
 from strips_framework.testing.declaration import ConformanceFailure
 from strips_framework.testing.ground_tasks import UNSOLVABLE, ground_task, task_space
 

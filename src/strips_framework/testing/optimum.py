@@ -1,7 +1,7 @@
 """Exact plan lengths on small problems, for checking admissibility claims.
 
 The state space is explored with the independent simulator's semantics
-(:class:`~strips_framework.simulate.Simulator`: states are sets of ground atoms,
+(:class:`~strips_framework.worldmodel.simulate.Simulator`: states are sets of ground atoms,
 conditions are model-checked on their closure), never with the planner's prover or
 world models, so a wrong optimum cannot come from the code under test. Every state
 reachable from the initial one is enumerated once, and the distance of each to the goal
@@ -17,9 +17,9 @@ from collections.abc import Iterator, Mapping, Sequence
 
 from strips_framework.logic.formulas import And, Atomic, Formula, params_in
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term
-from strips_framework.problem import OperatorSchema, Problem
-from strips_framework.search.node import Goal
-from strips_framework.simulate import Simulator, State, match_pattern
+from strips_framework.means_ends.node import Goal
+from strips_framework.worldmodel.problem import OperatorSchema, Problem
+from strips_framework.worldmodel.simulate import Simulator, State, match_pattern
 
 UNREACHABLE = float("inf")
 

@@ -3,8 +3,8 @@
 Each case is a small world model (facts, axioms, derived facts with their supports, and
 operator effects applied to it, ``$`` deletes included), a goal wff schema and every
 binding of its parameters that makes it follow. The tasks come from the same code the
-searches use (:func:`~strips_framework.world.initial_model`,
-:meth:`~strips_framework.operators.OperatorInstance.apply`,
+searches use (:func:`~strips_framework.worldmodel.world.initial_model`,
+:meth:`~strips_framework.worldmodel.operators.OperatorInstance.apply`,
 :func:`~strips_framework.logic.cnf.negated_goal_clauses`), so a prover that passes them
 answers the questions it will really be asked.
 """
@@ -19,11 +19,11 @@ from strips_framework.capabilities import ANSWERS, EQUALITY, QUANTIFIED_AXIOMS, 
 from strips_framework.logic.cnf import SkolemNames, clausify, negated_goal_clauses
 from strips_framework.logic.formulas import Atomic, Truth
 from strips_framework.logic.parser import parse_formula
-from strips_framework.logic.terms import Atom, Param
-from strips_framework.operators import OperatorInstance
-from strips_framework.problem import WILDCARD, DerivedFact, OperatorSchema, Problem
-from strips_framework.proving import Answer, ProofTask
-from strips_framework.world import WorldModel, initial_model
+from strips_framework.logic.terms import WILDCARD, Atom, Param
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem
+from strips_framework.worldmodel.proving import Answer, ProofTask
+from strips_framework.worldmodel.world import WorldModel, initial_model
 
 #: Effort for the cases: far more than any of them needs, so a complete prover proves
 #: every goal that follows.

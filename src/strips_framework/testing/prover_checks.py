@@ -22,7 +22,9 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause
-from strips_framework.proving import (
+from strips_framework.testing.declaration import ConformanceFailure
+from strips_framework.testing.prover_cases import CASES, ProverCase, pigeonhole
+from strips_framework.worldmodel.proving import (
     GAVE_UP,
     PROVED,
     SATURATED,
@@ -31,8 +33,6 @@ from strips_framework.proving import (
     ProofTask,
     TheoremProver,
 )
-from strips_framework.testing.declaration import ConformanceFailure
-from strips_framework.testing.prover_cases import CASES, ProverCase, pigeonhole
 
 
 def ask(prover: TheoremProver, task: ProofTask, what: str) -> ProofResult:

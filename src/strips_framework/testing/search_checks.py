@@ -19,20 +19,20 @@ from typing import Any, ClassVar
 from attrs import define, field
 
 from strips_framework.capabilities import ADMISSIBLE, OPTIMAL, declared
-from strips_framework.config import DEFAULT_CHOICES, TABLE_OF, Config
 from strips_framework.formats.native import NativeLoader
-from strips_framework.hookspecs import hookimpl
 from strips_framework.logic.formulas import formula_to_str
+from strips_framework.means_ends.components import evaluator_for_problem
+from strips_framework.means_ends.node import Node
 from strips_framework.planner import Planner
-from strips_framework.plugins import KINDS, Registry
-from strips_framework.problem import OperatorSchema, Problem
-from strips_framework.search.components import evaluator_for_problem
-from strips_framework.search.node import Node
+from strips_framework.plugin.config import DEFAULT_CHOICES, TABLE_OF, Config
+from strips_framework.plugin.hookspecs import hookimpl
+from strips_framework.plugin.registry import KINDS, Registry
 from strips_framework.result import Result
-from strips_framework.simulate import replay
 from strips_framework.testing.declaration import ConformanceFailure
 from strips_framework.testing.optimum import StateSpace
-from strips_framework.world import InitialModel
+from strips_framework.worldmodel.problem import OperatorSchema, Problem
+from strips_framework.worldmodel.simulate import replay
+from strips_framework.worldmodel.world import InitialModel
 
 #: The kit's problems: the paper's 3-boxes task and two tasks in a small robot world
 #: (one needs ``$`` deletes and four steps, one needs quantified axioms to pass a door).

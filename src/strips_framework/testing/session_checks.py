@@ -1,4 +1,4 @@
-"""Checks of a prover's sessions (:func:`~strips_framework.proving.open_session`).
+"""Checks of a prover's sessions (:func:`~strips_framework.worldmodel.proving.open_session`).
 
 A session must answer about a world model exactly what a fresh :class:`ProofTask` over the
 model's visible clauses would: a session that let a deleted fact, or a derived clause
@@ -15,12 +15,11 @@ from collections.abc import Set as AbstractSet
 
 from strips_framework.capabilities import QUANTIFIED_AXIOMS
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.terms import Atom, Param
-from strips_framework.operators import may_delete
-from strips_framework.problem import WILDCARD
-from strips_framework.proving import ProofResult, ProofTask, TheoremProver, open_session
+from strips_framework.logic.terms import WILDCARD, Atom, Param
 from strips_framework.testing.declaration import ConformanceFailure
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.worldmodel.operators import may_delete
+from strips_framework.worldmodel.proving import ProofResult, ProofTask, TheoremProver, open_session
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 M, N = Param("m"), Param("n")
 #: Ample for every goal here: a session may spend its effort differently from a fresh

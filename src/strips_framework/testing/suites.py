@@ -25,14 +25,13 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
     declared,
 )
-from strips_framework.config import DEFAULT_CHOICES
+from strips_framework.forward.eager import AStarSearch
+from strips_framework.forward.lazy import LazyGreedySearch
+from strips_framework.means_ends.model_astar import ModelAStarSearch
+from strips_framework.means_ends.strategy import MeansEndsSearch
 from strips_framework.planner import GROUND_STRATEGY, Planner
-from strips_framework.plugins import KINDS, Registry
-from strips_framework.proving import TheoremProver
-from strips_framework.search.forward.eager import AStarSearch
-from strips_framework.search.forward.lazy import LazyGreedySearch
-from strips_framework.search.means_ends import MeansEndsSearch
-from strips_framework.search.model_astar import ModelAStarSearch
+from strips_framework.plugin.config import DEFAULT_CHOICES
+from strips_framework.plugin.registry import KINDS, Registry
 from strips_framework.testing.declaration import (
     ConformanceFailure,
     check_declaration,
@@ -55,10 +54,6 @@ from strips_framework.testing.prover_checks import (
     check_refuses_unsupported,
     check_uncompleted_proof,
 )
-from strips_framework.testing.session_checks import (
-    check_session_agrees_with_fresh_tasks,
-    check_session_hides_and_revives_derived_clauses,
-)
 from strips_framework.testing.search_checks import (
     PROBLEMS,
     check_admissible,
@@ -67,6 +62,11 @@ from strips_framework.testing.search_checks import (
     planner_for,
     recorded_search,
 )
+from strips_framework.testing.session_checks import (
+    check_session_agrees_with_fresh_tasks,
+    check_session_hides_and_revives_derived_clauses,
+)
+from strips_framework.worldmodel.proving import TheoremProver
 
 
 class _Conformance:

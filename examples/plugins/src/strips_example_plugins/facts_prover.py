@@ -19,7 +19,7 @@ from attrs import frozen
 from strips_framework.capabilities import ANSWERS, COMPLETE, SOUND, UNCOMPLETED_PROOF
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term, is_ground
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
 
 Binding = dict[int | Param, Term]
 

@@ -7,7 +7,7 @@ from typing import ClassVar
 from attrs import field, frozen, validators
 
 from strips_framework.capabilities import ADMISSIBLE
-from strips_framework.search.node import Node
+from strips_framework.means_ends.node import Node
 
 
 @frozen

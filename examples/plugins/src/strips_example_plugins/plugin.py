@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from strips_example_plugins.facts_prover import FactsProver
 from strips_example_plugins.goals_left import GoalsLeft
-from strips_framework.hookspecs import hookimpl
+from strips_framework.plugin.hookspecs import hookimpl
 
 
 @hookimpl

@@ -18,7 +18,7 @@ from collections.abc import Iterable, Iterator
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Param, Term
-from strips_framework.proving import Answer, ProofTask
+from strips_framework.worldmodel.proving import Answer, ProofTask
 
 
 class SymbolTable:

@@ -38,7 +38,14 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.errors import PluginError
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
+from strips_framework.worldmodel.proving import (
+    GAVE_UP,
+    PROVED,
+    SATURATED,
+    Answer,
+    ProofResult,
+    ProofTask,
+)
 
 _PROVED = {"Theorem", "Unsatisfiable", "ContradictoryAxioms"}
 _SATURATED = {"CounterSatisfiable", "Satisfiable"}

@@ -16,7 +16,7 @@ import heapq
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param, Term
 from strips_framework.logic.unify import match, substitute, unify
-from strips_framework.proving import ProofTask
+from strips_framework.worldmodel.proving import ProofTask
 
 #: Clauses made at most: the uncompleted proof of a big model stays small and quick.
 LIMIT = 120

@@ -6,7 +6,7 @@ every evaluator that reports them.
 
 from __future__ import annotations
 
-from strips_framework.search.node import Node
+from strips_framework.means_ends.node import Node
 
 
 def subgoals(node: Node) -> int:

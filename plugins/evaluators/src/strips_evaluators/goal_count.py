@@ -8,7 +8,7 @@ from attrs import frozen
 
 from strips_evaluators.features import subgoals, unproved_literals
 from strips_evaluators.options import weight
-from strips_framework.search.node import Node
+from strips_framework.means_ends.node import Node
 
 
 @frozen

@@ -8,7 +8,7 @@ from attrs import frozen
 
 from strips_evaluators.features import subgoals
 from strips_framework.capabilities import ADMISSIBLE
-from strips_framework.search.node import Node
+from strips_framework.means_ends.node import Node
 
 
 @frozen

@@ -11,7 +11,7 @@ from strips_evaluators.features import subgoals, unproved_literals
 from strips_evaluators.options import weight, weight_table
 from strips_framework.logic.formulas import atoms_of
 from strips_framework.logic.terms import EQUALITY
-from strips_framework.search.node import Node
+from strips_framework.means_ends.node import Node
 
 
 @frozen

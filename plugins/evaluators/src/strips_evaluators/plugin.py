@@ -9,10 +9,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from strips_framework.hookspecs import hookimpl
+from strips_framework.plugin.hookspecs import hookimpl
 
 if TYPE_CHECKING:
-    from strips_framework.search.components import NodeEvaluator, StateHeuristic
+    from strips_framework.forward.components import StateHeuristic
+    from strips_framework.means_ends.components import NodeEvaluator
 
 
 @hookimpl

@@ -22,9 +22,9 @@ from attrs import field, frozen, validators
 from strips_evaluators.options import weight
 from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
-from strips_framework.problem import OperatorSchema
-from strips_framework.search.node import Node
-from strips_framework.world import InitialModel
+from strips_framework.means_ends.node import Node
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.world import InitialModel
 
 #: Values of the parameters and variables of some atoms.
 Binding = dict[object, object]

@@ -35,7 +35,7 @@ from attrs import evolve
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import EQUALITY
-from strips_framework.proving import GAVE_UP, ProofResult, ProofTask
+from strips_framework.worldmodel.proving import GAVE_UP, ProofResult, ProofTask
 
 if TYPE_CHECKING:
     from strips_resolution_prover.prover import ResolutionProver

@@ -7,10 +7,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from strips_framework.hookspecs import hookimpl
+from strips_framework.plugin.hookspecs import hookimpl
 
 if TYPE_CHECKING:
-    from strips_framework.proving import TheoremProver
+    from strips_framework.worldmodel.proving import TheoremProver
 
 
 @hookimpl

@@ -35,8 +35,15 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause, Literal
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofResult, ProofTask
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.worldmodel.proving import (
+    GAVE_UP,
+    PROVED,
+    SATURATED,
+    Answer,
+    ProofResult,
+    ProofTask,
+)
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover.auto import is_world_model, prove_automatically
 from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.demodulation import Demodulators

@@ -32,10 +32,10 @@ from unified_planning.plans import ActionInstance, SequentialPlan
 from strips_framework import __version__
 from strips_framework.capabilities import ADMISSIBLE, OPTIMAL, declared
 from strips_framework.errors import StripsError
+from strips_framework.limits import Clock
 from strips_framework.pddl import parse_task
 from strips_framework.planner import GROUND_STRATEGY, Planner
 from strips_framework.result import Result, Status
-from strips_framework.search.limits import Clock
 
 Status_ = PlanGenerationResultStatus
 
@@ -163,7 +163,7 @@ class StripsEngine(Engine, OneshotPlannerMixin):
                 Status_.UNSUPPORTED_PROBLEM, None, self.name, log_messages=[_log(error)]
             )
         if output_stream is not None:
-            from strips_framework.report import text_lines
+            from strips_framework.cli.report import text_lines
 
             output_stream.write("\n".join(text_lines(result)) + "\n")
         plan = None

@@ -1,7 +1,7 @@
 """The effort bound as a Z3 resource limit.
 
 Z3's ``rlimit`` counts internal operations, not seconds, so a run gives the same answer on
-any machine and under any load. One attempt (one :class:`~strips_framework.proving.ProofTask`)
+any machine and under any load. One attempt (one :class:`~strips_framework.worldmodel.proving.ProofTask`)
 gets ``effort * scale`` units in all, shared by its checks: each check may use what the
 previous ones left. Z3 notices the limit between operations, so a check may overrun it
 slightly; the overrun is charged, and the next check gets nothing.

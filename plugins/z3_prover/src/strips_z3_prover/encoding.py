@@ -20,7 +20,7 @@ import z3
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Param, Term, subterms
-from strips_framework.proving import ProofTask
+from strips_framework.worldmodel.proving import ProofTask
 
 #: A variable or parameter replaced by a term (ground) or a Z3 bound constant (quantified).
 Binding = Mapping[int | Param, Term]

@@ -22,7 +22,7 @@ import z3
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import EQUALITY, Param
 from strips_framework.logic.unify import unify
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.candidates import ModelTruth, surviving
 from strips_z3_prover.encoding import is_named, task_terms

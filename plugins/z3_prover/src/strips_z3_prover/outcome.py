@@ -5,7 +5,7 @@ from __future__ import annotations
 import z3
 from attrs import frozen
 
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Answer
 
 
 @frozen

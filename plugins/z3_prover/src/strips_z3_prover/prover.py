@@ -25,8 +25,8 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause
-from strips_framework.proving import PROVED, ProofResult, ProofTask
-from strips_framework.world import InitialModel, WorldModel
+from strips_framework.worldmodel.proving import PROVED, ProofResult, ProofTask
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.encoding import clause_params, has_functions, task_terms
 from strips_z3_prover.ground import prove_ground

@@ -23,7 +23,7 @@ import z3
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param, Term, is_ground
-from strips_framework.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.encoding import Vocabulary, clause_params, is_named, task_terms
 from strips_z3_prover.outcome import Outcome, status_of

@@ -1,7 +1,7 @@
 """One Z3 solver holding ground instances of every clause it has seen, switched by selectors.
 
 The world models of one search are M0 plus a few ADDITIONS and less a few DELETIONS
-(:mod:`strips_framework.world`), so consecutive proof tasks share almost all their axioms.
+(:mod:`strips_framework.worldmodel.world`), so consecutive proof tasks share almost all their axioms.
 A session asserts each distinct clause once, as ``selector -> instance`` for each of its
 ground instances, and a task switches on exactly its own axioms by passing their selectors
 as assumptions to ``check``: deleting a clause is leaving its selector out, adding one is

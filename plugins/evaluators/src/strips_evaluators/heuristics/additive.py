@@ -17,6 +17,7 @@ from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
 
+
 @frozen
 class AdditiveEstimator:
     explorer: Explorer

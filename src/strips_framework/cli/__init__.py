@@ -1,0 +1,2 @@
+"""The ``strips`` command line: argument parsing, text and JSON output, exit codes and the
+process limits the CLI sets."""

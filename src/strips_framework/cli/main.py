@@ -1,0 +1,288 @@
+"""The ``strips`` command: solve, validate plans, benchmark, prove TPTP problems, list plugins."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import os
+import sys
+import warnings
+from collections.abc import Sequence
+from pathlib import Path
+
+import attrs
+
+from strips_framework import __version__
+from strips_framework.bench import command as bench_command
+from strips_framework.cli import exit_codes, report
+from strips_framework.cli import macrops as macrop_command
+from strips_framework.errors import StripsError
+from strips_framework.formats.ipc import plan_text, read_plan
+from strips_framework.limits import Clock, LimitReached
+from strips_framework.pddl.files import is_pddl
+from strips_framework.planner import Planner
+from strips_framework.plugin.config import Choice, Config
+from strips_framework.plugin.registry import KINDS, Registration
+from strips_framework.progress import Progress
+from strips_framework.result import Result, Status
+from strips_framework.user_files import check_writable, write_atomically
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="strips",
+        description="STRIPS (Fikes & Nilsson, 1971): means-ends planning over first-order "
+        "world models, with pluggable provers, evaluators and strategies; forward search "
+        "with state heuristics on PDDL tasks.",
+        epilog="exit codes: 0 plan found, 1 invalid plan (validate), 2 bad input or config, "
+        "11 unsolvable, 12 search ended without a plan (incomplete), 22 out of memory, "
+        "23 out of time, 32 a plugin raised an exception, 130 interrupted (Ctrl-C)",
+    )
+    parser.add_argument("--version", action="version", version=f"strips {__version__}")
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    solve = commands.add_parser("solve", help="search for a plan")
+    solve.add_argument(
+        "files",
+        type=Path,
+        nargs="+",
+        metavar="[DOMAIN] PROBLEM",
+        help="a problem file (e.g. examples/three-boxes.strips), or a PDDL problem with "
+        "its domain before it (without one, the domain is looked for beside the problem)",
+    )
+    solve.add_argument("--config", type=Path, help="TOML config (default: built-in defaults)")
+    solve.add_argument("--plan-file", type=Path, help="also write the plan here, IPC style")
+    solve.add_argument("--json", action="store_true", help="print the result as JSON")
+    solve.add_argument("--tree", type=Path, help="write the search tree as Graphviz DOT")
+    solve.add_argument("--macrops", type=Path, metavar="LIBRARY",
+                       help="use the MACROPs of this library (see 'strips learn')")
+
+    prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
+    prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
+    prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
+    prove.add_argument(
+        "--effort", type=_positive, help="prover effort (default: [limits] effort)"
+    )
+    prove.add_argument(
+        "--prover", help="a registered prover by name (default: the config's [prover] name)"
+    )
+
+    validate = commands.add_parser(
+        "validate", help="replay a plan in the independent simulator and check the goal"
+    )
+    validate.add_argument(
+        "files",
+        type=Path,
+        nargs="+",
+        metavar="[DOMAIN] PROBLEM PLAN",
+        help="problem file (PDDL: with its domain before it, or found beside it) and the "
+        "plan: one step a line, ';' comments",
+    )
+
+    bench_command.add_parser(commands)
+    macrop_command.add_parsers(commands)
+
+    commands.add_parser("plugins", help="list the registered implementations and options")
+    return parser
+
+
+def _positive(text: str) -> int:
+    """An argparse type: an integer >= 1 (a bad one is a usage error, not a traceback)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}")
+    return value
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    warnings.formatwarning = lambda message, *_: f"strips: warning: {message}\n"
+    planner: Planner | None = None
+    try:
+        if argv[:2] == ["bench", "report"]:
+            return bench_command.report(argv[2:])
+        args = _parser().parse_args(argv)
+        if args.command == "bench":
+            return bench_command.bench(args)
+        config = Config.from_file(args.config) if getattr(args, "config", None) else Config.default()
+        if args.command == "solve":
+            domain, problem = _domain_and_problem(args.files, "solve")
+            if is_pddl(problem, domain):
+                config = config.for_pddl()
+        planner = Planner.create(config)
+        if args.command == "solve":
+            return _solve(planner, args)
+        if args.command == "prove":
+            return _prove(planner, args)
+        if args.command == "validate":
+            return _validate(planner, args)
+        if args.command in MACROP_COMMANDS:
+            return MACROP_COMMANDS[args.command](planner, args)
+        return _plugins(planner)
+    except StripsError as error:
+        print(f"strips: error: {error}", file=sys.stderr)
+        return exit_codes.INPUT_ERROR
+    except KeyboardInterrupt:  # outside a search (a search reports its statistics)
+        print("strips: interrupted", file=sys.stderr)
+        return exit_codes.INTERRUPTED
+    except BrokenPipeError:  # `strips plugins | head`: the reader has what it wanted
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no error at exit
+        return exit_codes.SOLVED
+    except Exception as error:
+        culprit = planner.registry.raised_in(error) if planner is not None else None
+        if culprit is None:
+            raise  # a bug in the core: the traceback is what a bug report needs
+        registration, where = culprit
+        origin = registration.distribution or registration.plugin
+        print(
+            f"strips: error: {KINDS[registration.kind][1]} {registration.name!r} (plugin "
+            f"{origin}) raised {type(error).__name__}: {error} (at {where})",
+            file=sys.stderr,
+        )
+        return exit_codes.PLUGIN_ERROR
+
+
+MACROP_COMMANDS = {
+    "learn": macrop_command.learn,
+    "table": macrop_command.table,
+    "execute": macrop_command.execute_command,
+}
+
+
+def _domain_and_problem(files: list[Path], command: str, rest: int = 0) -> tuple[Path | None, Path]:
+    """``[DOMAIN] PROBLEM`` from the positional arguments (``rest`` more follow them)."""
+    if not 1 <= len(files) - rest <= 2:
+        names = "[DOMAIN] PROBLEM" + " PLAN" * rest
+        raise StripsError(f"usage: strips {command} {names} (got {len(files)} files)")
+    given = files[: len(files) - rest]
+    return (given[0] if len(given) == 2 else None), given[-1]
+
+
+def _solve(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.cli.process_limits import enforced
+
+    domain, problem = _domain_and_problem(args.files, "solve")
+    for path, what in ((args.plan_file, "the plan"), (args.tree, "the search tree")):
+        if path is not None:
+            check_writable(path, what)  # before the search, not after it
+    clock = Clock(planner.config.limits.time)
+    result: Result | None = None
+    progress = Progress(sys.stderr) if sys.stderr.isatty() else None
+    try:
+        with enforced(planner.config.limits), progress or contextlib.nullcontext():
+            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock, args.macrops)
+    except LimitReached as limit:  # while reading or grounding: no search statistics yet
+        status = limit.status
+    except MemoryError:
+        status = Status.MEMORY_LIMIT
+    except KeyboardInterrupt:  # Ctrl-C while reading or grounding (searches catch their own)
+        status = Status.INTERRUPTED
+    else:
+        status = result.status
+    if result is not None:
+        _write_files(args, problem, result)
+    if args.json:
+        chosen = planner.config
+        config = {chosen.table_of(kind): chosen.choice(kind).name for kind in planner.kinds_used()}
+        where = str(domain) if domain is not None else None
+        document = report.document(result, status, clock.elapsed(), str(problem), where, config)
+        import json  # only --json needs it: start-up counts on small tasks
+
+        print(json.dumps(document, indent=2))
+    elif result is not None:
+        print("\n".join(report.text_lines(result)))
+    else:
+        print("\n".join(report.limit_lines(status, clock.elapsed())))
+    return exit_codes.for_status(status)
+
+
+def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> None:
+    """The ``--tree`` and ``--plan-file`` outputs of a finished search."""
+    if args.tree:
+        if result.tree is None:
+            warnings.warn(
+                f"--tree: the {result.statistics.family} search keeps no tree to draw "
+                f"(only the world-model strategies do); {args.tree} not written",
+                stacklevel=1,
+            )
+        else:
+            from strips_framework.cli.tree_dot import search_tree_to_dot
+
+            write_atomically(args.tree, search_tree_to_dot(result.tree, f"{problem.stem}: search tree"))
+    if args.plan_file and result.plan is not None and result.cost is not None:
+        write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs))
+
+
+def _prove(planner: Planner, args: argparse.Namespace) -> int:
+    from strips_framework.formats.tptp import load_tptp, szs_report
+
+    problem = load_tptp(args.problem)
+    effort = args.effort if args.effort is not None else planner.config.limits.effort
+    config = planner.config
+    if args.prover is not None and args.prover != config.choices["prover"].name:
+        # Another prover than the config's: with its own defaults, not the config's options.
+        choices = {**config.choices, "prover": Choice("prover", args.prover)}
+        config = attrs.evolve(config, choices=choices)
+    result = config.build(planner.registry, "prover").prove(problem.task(effort=effort))
+    print(szs_report(problem, result))
+    return 0
+
+
+def _validate(planner: Planner, args: argparse.Namespace) -> int:
+    domain, problem = _domain_and_problem(args.files, "validate", rest=1)
+    steps = read_plan(args.files[-1], ipc_only=is_pddl(problem, domain))
+    if is_pddl(problem, domain):
+        from strips_framework.pddl.validate import validate_plan
+
+        check = validate_plan(planner.load_pddl(problem, domain), steps)
+        print(check.message)
+        return exit_codes.SOLVED if check.valid else exit_codes.INVALID_PLAN
+    from strips_framework.worldmodel.simulate import replay
+
+    outcome = replay(planner.load(problem), steps)
+    print(outcome.message)
+    return exit_codes.SOLVED if outcome.valid else exit_codes.INVALID_PLAN
+
+
+def _plugins(planner: Planner) -> int:
+    for kind, (_, _, plural) in KINDS.items():
+        print(f"{plural}:")
+        for registration in planner.registry.registrations(kind):
+            origin = registration.distribution or "builtin"
+            print(f"  {registration.name:<20} {origin} ({registration.plugin})")
+            doc = (registration.cls.__doc__ or "").strip().splitlines()
+            if doc:
+                print(f"      {doc[0]}")
+            for line in _capability_lines(registration):
+                print(f"      {line}")
+            for name, default in registration.options():
+                print(f"      {name} = {default!r}")
+    return 0
+
+
+def _capability_lines(registration: Registration) -> list[str]:
+    """``capabilities: ...`` (unknown words marked) and ``requires: ...``, for the kinds
+    that have a capability vocabulary or when the class declares anything."""
+    from strips_framework.capabilities import VOCABULARY, declared, requirements, unknown
+
+    kind, cls = registration.kind, registration.cls
+    have = declared(cls, kind)
+    needs = requirements(cls)
+    lines = []
+    if have is not None or VOCABULARY.get(kind):
+        if have is None:
+            lines.append("capabilities: undeclared")
+        else:
+            strange = unknown(have, kind)
+            words = [c + (" (unknown)" if c in strange else "") for c in sorted(have)]
+            lines.append(f"capabilities: {', '.join(words) or 'none'}")
+    if needs:
+        shown = [
+            f"{KINDS[n.kind][1]} with {n.capability}" + ("" if n.strict else " (soft: a warning if missing)")
+            for n in needs
+        ]
+        lines.append(f"requires: {'; '.join(shown)}")
+    return lines

@@ -1,0 +1,43 @@
+"""Limits the operating system enforces on the whole ``strips`` process.
+
+The searches watch ``[limits]`` themselves, but reading and grounding a large task, or a
+heuristic's set-up, can outgrow them too. So the CLI also caps the address space at the
+memory limit (allocations beyond it raise :class:`MemoryError`) and sets a wall-clock
+alarm that raises :class:`~strips_framework.limits.LimitReached` wherever
+the process is. A search catches both and reports the statistics it has; elsewhere the
+CLI turns them into exit codes 22 and 23.
+"""
+
+from __future__ import annotations
+
+import resource
+import signal
+from collections.abc import Iterator
+from contextlib import contextmanager
+from types import FrameType
+
+from strips_framework.limits import LimitReached, Limits
+from strips_framework.result import Status
+
+
+def _out_of_time(signum: int, frame: FrameType | None) -> None:
+    raise LimitReached(Status.TIME_LIMIT)
+
+
+@contextmanager
+def enforced(limits: Limits) -> Iterator[None]:
+    """Apply the time and memory limits to the process while the block runs."""
+    old_handler = signal.signal(signal.SIGALRM, _out_of_time)
+    signal.setitimer(signal.ITIMER_REAL, limits.time)
+    old_memory = resource.getrlimit(resource.RLIMIT_AS)
+    if limits.memory is not None:
+        cap, hard = limits.memory * 2**20, old_memory[1]
+        if hard != resource.RLIM_INFINITY:
+            cap = min(cap, hard)
+        resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old_handler)
+        resource.setrlimit(resource.RLIMIT_AS, old_memory)

@@ -1,0 +1,63 @@
+"""The means-ends search tree as Graphviz DOT, in the spirit of the paper's Figure 1.
+
+Each node shows its number, its world model (as M0 plus the changes made so far) and its
+goal list; an edge into a node made by applying an operator is labelled with it and drawn
+bold; the solution path is drawn in red.
+"""
+
+from __future__ import annotations
+
+from strips_framework.logic.formulas import formula_to_str
+from strips_framework.means_ends.node import Node
+from strips_framework.means_ends.result import Tree
+from strips_framework.worldmodel.world import WorldModel
+
+_MAX_GOAL_TEXT = 60
+
+
+def _escape(text: str) -> str:
+    return text.replace("\\", "\\\\").replace('"', '\\"')
+
+
+def _goal_text(node: Node) -> str:
+    goals = []
+    for goal in node.goals:
+        text = "G0" if goal.operator is None else f"pre {goal.operator}"
+        if goal.operator is not None:
+            formula = formula_to_str(goal.formula)
+            if len(formula) > _MAX_GOAL_TEXT:
+                formula = formula[: _MAX_GOAL_TEXT - 3] + "..."
+            text += f": {formula}"
+        goals.append(text)
+    return "\\l".join(_escape(g) for g in goals) + "\\l"
+
+
+def search_tree_to_dot(tree: Tree, title: str = "STRIPS search tree") -> str:
+    on_path = {id(node) for node in tree.solution_path()}
+    lines = [
+        "digraph search_tree {",
+        f'  label="{_escape(title)}"; labelloc=t;',
+        '  node [shape=box, fontname="Helvetica", fontsize=10];',
+        '  edge [fontname="Helvetica", fontsize=9];',
+    ]
+    model_names: dict[WorldModel, str] = {}
+    for node in tree.nodes:
+        # Models are numbered in order of appearance, as M0, M1, ... in the paper's figure.
+        model = model_names.setdefault(node.model, f"M{len(model_names)}")
+        label = f"n{node.id}: {model}\\l{_goal_text(node)}"
+        style = ', color=red, penwidth=2' if id(node) in on_path else ""
+        if node is tree.solution:
+            style += ", peripheries=2"
+        lines.append(f'  n{node.id} [label="{label}"{style}];')
+    for node in tree.nodes:
+        if node.parent is None:
+            continue
+        attributes = []
+        if node.applied is not None:
+            attributes += [f'label="{_escape(str(node.applied))}"', "style=bold"]
+        if id(node) in on_path and id(node.parent) in on_path:
+            attributes += ["color=red", "penwidth=2"]
+        suffix = f" [{', '.join(attributes)}]" if attributes else ""
+        lines.append(f"  n{node.parent.id} -> n{node.id}{suffix};")
+    lines.append("}")
+    return "\n".join(lines) + "\n"

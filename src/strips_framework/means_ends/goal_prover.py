@@ -1,0 +1,66 @@
+"""Asking the configured prover about goal wffs in world models, with the bookkeeping the
+searches need: one prover session per problem (M0 indexed once), clause forms computed
+once per goal, answers cached per (model, goal), and the time spent proving measured for
+the paper's Table 2."""
+
+from __future__ import annotations
+
+import time
+
+from attrs import define, field
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.cnf import SkolemNames, negated_goal_clauses
+from strips_framework.logic.formulas import Formula
+from strips_framework.worldmodel.problem import Problem
+from strips_framework.worldmodel.proving import (
+    ProofResult,
+    ProverSession,
+    TheoremProver,
+    open_session,
+)
+from strips_framework.worldmodel.world import InitialModel, WorldModel, initial_model
+
+
+@define
+class GoalProver:
+    """One search's access to the prover."""
+
+    problem: Problem
+    prover: TheoremProver
+    effort: int
+    skolem: SkolemNames = field(factory=SkolemNames)
+    initial: InitialModel = field(init=False)
+    session: ProverSession = field(init=False)
+    seconds: float = 0.0
+    attempts: int = 0
+    _negations: dict[Formula, tuple[Clause, ...]] = field(factory=dict)
+    _cache: dict[tuple[WorldModel, Formula, int], ProofResult] = field(factory=dict)
+
+    def __attrs_post_init__(self) -> None:
+        self.initial = initial_model(self.problem, self.skolem)
+        self.session = open_session(self.prover, self.initial, self.problem.unique_names)
+
+    def root_model(self) -> WorldModel:
+        return WorldModel(self.initial)
+
+    def negated(self, goal: Formula) -> tuple[Clause, ...]:
+        """The clauses of ¬goal (computed once per goal wff)."""
+        clauses = self._negations.get(goal)
+        if clauses is None:
+            clauses = tuple(negated_goal_clauses(goal, self.skolem))
+            self._negations[goal] = clauses
+        return clauses
+
+    def prove(self, model: WorldModel, goal: Formula, max_answers: int = 1) -> ProofResult:
+        key = (model, goal, max_answers)
+        cached = self._cache.get(key)
+        if cached is not None:
+            return cached
+        negated = self.negated(goal)
+        started = time.perf_counter()
+        result = self.session.prove(model, negated, self.effort, max_answers)
+        self.seconds += time.perf_counter() - started
+        self.attempts += 1
+        self._cache[key] = result
+        return result

@@ -1,0 +1,187 @@
+"""The builtin relevance filter: operators whose add lists continue the proof (III.C).
+
+Two steps, as in the paper. Candidates are the schemata with an add-list atom whose
+predicate occurs negated in a difference clause. Each add-list atom of a candidate is then
+resolved against each such literal; every resolvent yields one relevant instance, with the
+unifier applied to the schema's parameters. ``goto(m, n)`` against ``~ATR(a) | ~ATR(b)``
+gives ``goto(m, a)`` (resolvent ``~ATR(b)``) and ``goto(m, b)`` (resolvent ``~ATR(a)``).
+
+Instances are ranked by resolvent size, since an instance that leaves less of the clause
+to prove continues the proof further; among equals, instances that would delete fewer of
+the facts the proof already rests on come first. The paper leaves the order of candidates
+open; this one keeps STRIPS from undoing a goal it has just achieved (after
+``pushto(BOX1, BOX2)``, ``pushto(BOX3, BOX2)`` is preferred to ``pushto(BOX2, BOX3)``,
+which would delete ``NEXTTO(BOX1, BOX2)``).
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Sequence
+from typing import ClassVar
+
+from attrs import frozen
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.formulas import And, Atomic
+from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
+from strips_framework.logic.unify import substitute, unify
+from strips_framework.means_ends.node import Difference, RelevantInstance
+from strips_framework.worldmodel.operators import OperatorInstance, may_delete
+from strips_framework.worldmodel.problem import OperatorSchema
+from strips_framework.worldmodel.world import InitialModel, WorldModel
+
+#: Schema parameters are renamed to this tag while unifying, so they never meet the goal's
+#: own parameters (which carry tag 0: preconditions are built from the schemata).
+_RENAMED = 1
+
+
+@frozen
+class AddListRelevance:
+    """Relevant instances from resolving add-list atoms against difference clauses.
+
+    An instance is dropped when a parameter that only its effects mention (not its
+    precondition) stays unbound or is bound to another operator's parameter: applying it
+    would need a value that neither this resolution nor the precondition proof provides.
+    It is also dropped when its precondition can never hold: a conjunct is a ground atom
+    of a *rigid* predicate (one no operator adds and no rule of the model concludes) that
+    is not a fact of the model. Facts of rigid predicates can only be deleted, so such an
+    atom never becomes true (``pushto(ROBOT, BOX2)`` needs ``PUSHABLE(ROBOT)``).
+    """
+
+    name: ClassVar[str] = "add-list"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+
+    def for_problem(
+        self, operators: Sequence[OperatorSchema], initial: InitialModel
+    ) -> AddListIndex:
+        """The add-list index and rigid predicates of one problem, built once."""
+        return AddListIndex(_add_atoms_by_predicate(operators), _rigid_predicates(operators, initial))
+
+
+@frozen
+class AddListIndex:
+    """:class:`AddListRelevance` for one problem: candidates by the predicate they add,
+    and the rigid predicates of its M0 (only deleted, never added or concluded, so a
+    model's rigid facts are M0's less its deletions)."""
+
+    by_predicate: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]
+    rigid: frozenset[tuple[str, int]]
+
+    def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
+        protected = _protected_facts(difference, model)
+        ranked: dict[OperatorInstance, tuple[tuple[int, int, int], RelevantInstance]] = {}
+        order = 0
+        for clause in difference.clauses:
+            for position, (positive, atom) in enumerate(clause.literals):
+                if positive:
+                    continue
+                for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
+                    found = _resolve(schema, renamed, add_atom, clause, position)
+                    if found is None or _never_applicable(found.operator, self.rigid, model):
+                        continue
+                    harm = _deleted_count(found.operator, protected)
+                    key = (len(found.resolvent.literals), harm, order)
+                    order += 1
+                    known = ranked.get(found.operator)
+                    if known is None or key < known[0]:
+                        ranked[found.operator] = (key, found)
+        return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
+
+
+def _add_atoms_by_predicate(
+    operators: Sequence[OperatorSchema],
+) -> dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]:
+    """Candidate index: (predicate, arity) -> (schema, renaming, renamed add atom)."""
+    index: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]
+    index = defaultdict(list)
+    for schema in operators:
+        renaming = {p: Param(p.name, _RENAMED) for p in schema.parameters}
+        for atom in schema.add_list:
+            index[(atom[0], len(atom))].append((schema, renaming, substitute(atom, renaming)))
+    return index
+
+
+def _resolve(
+    schema: OperatorSchema,
+    renaming: dict[Param, Param],
+    add_atom: Atom,
+    clause: Clause,
+    position: int,
+) -> RelevantInstance | None:
+    target = clause.literals[position][1]
+    unifier = unify(add_atom, target, {})
+    if unifier is None:
+        return None
+    binding: dict[Param, Term] = {}
+    for own, renamed in renaming.items():
+        value = substitute(renamed, unifier)
+        if value == renamed:
+            continue
+        if params_of(value) or variables_of(value):
+            return None  # bound to another operator's parameter, or to a variable
+        binding[own] = value
+    for own in schema.parameters:
+        if own not in binding and own not in schema.precondition_params:
+            return None
+    rest = [
+        (sign, substitute(atom, unifier))
+        for i, (sign, atom) in enumerate(clause.literals)
+        if i != position
+    ]
+    resolvent = Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
+    return RelevantInstance(OperatorInstance(schema, binding.items()), resolvent)
+
+
+def _rigid_predicates(
+    operators: Sequence[OperatorSchema], initial: InitialModel
+) -> frozenset[tuple[str, int]]:
+    """Predicates of M0's facts that no operator adds and no non-unit clause concludes."""
+    concluded = {
+        (atom[0], len(atom) - 1)
+        for clause in initial.clauses
+        if not clause.is_unit
+        for positive, atom in clause.literals
+        if positive
+    }
+    added = {(atom[0], len(atom) - 1) for schema in operators for atom in schema.add_list}
+    facts = {(atom[0], len(atom) - 1) for atom in initial.facts}
+    return frozenset(facts - added - concluded)
+
+
+def _never_applicable(
+    instance: OperatorInstance, rigid: frozenset[tuple[str, int]], model: WorldModel
+) -> bool:
+    precondition = instance.schema.precondition
+    conjuncts = precondition.parts if isinstance(precondition, And) else (precondition,)
+    binding = instance.binding_map()
+    for part in conjuncts:
+        if isinstance(part, Atomic) and (part.atom[0], len(part.atom) - 1) in rigid:
+            atom = substitute(part.atom, binding)
+            if is_ground(atom) and not model.holds(atom):
+                return True
+    return False
+
+
+def _protected_facts(difference: Difference, model: WorldModel) -> set[Atom]:
+    """Facts of ``model`` that could resolve away a literal of the difference: the facts
+    the proof rests on or could rest on (found through the model's fact index)."""
+    wanted = {
+        atom
+        for clause in (*difference.negated_goal, *difference.clauses)
+        for positive, atom in clause.literals
+        if not positive
+    }
+    return {
+        fact
+        for atom in wanted
+        for fact in model.facts_matching(atom)
+        if unify(atom, fact, {}) is not None
+    }
+
+
+def _deleted_count(instance: OperatorInstance, facts: set[Atom]) -> int:
+    """How many of ``facts`` the instance's delete list may delete (unbound parameters and
+    wildcards match anything)."""
+    patterns, _ = instance.effects()
+    return sum(1 for fact in facts if any(may_delete(p, fact) for p in patterns))

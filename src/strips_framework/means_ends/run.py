@@ -1,0 +1,120 @@
+"""One means-ends search (see :mod:`strips_framework.means_ends.strategy`): the queue of
+nodes, the nodes made so far, and the GPS-style step from a node to its successor. Kept
+apart from the strategy class so that registering the strategy imports none of this."""
+
+from __future__ import annotations
+
+import heapq
+
+from strips_framework.limits import Clock, LimitReached, Limits
+from strips_framework.means_ends.components import (
+    DifferenceExtractor,
+    NodeEvaluator,
+    RelevanceFilter,
+    evaluator_for_problem,
+)
+from strips_framework.means_ends.goal_prover import GoalProver
+from strips_framework.means_ends.node import Goal, Node
+from strips_framework.means_ends.tree import SearchTree
+from strips_framework.result import Result, Status
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.problem import Problem
+from strips_framework.worldmodel.proving import ProofResult
+from strips_framework.worldmodel.world import WorldModel
+
+
+class MeansEndsRun:
+    """The state of one means-ends search."""
+
+    def __init__(
+        self,
+        max_goals: int,
+        problem: Problem,
+        goal_prover: GoalProver,
+        differences: DifferenceExtractor,
+        relevance: RelevanceFilter,
+        evaluator: NodeEvaluator,
+        limits: Limits,
+        clock: Clock,
+    ) -> None:
+        self.max_goals = max_goals
+        self.goal_prover = goal_prover
+        self.differences = differences
+        self.relevance = relevance.for_problem(problem.operators, goal_prover.initial)
+        self.evaluator = evaluator_for_problem(evaluator, problem.operators, goal_prover.initial)
+        self.tree = SearchTree(limits, goal_prover, clock)
+        self.queue: list[tuple[float, int, Node]] = []
+        self.pushes = 0
+        self.seen: set[tuple[WorldModel, tuple[Goal, ...]]] = set()
+        self.top_goal = Goal(problem.goal)
+
+    def search(self) -> Result:
+        try:
+            solution = self._make(self.goal_prover.root_model(), (self.top_goal,), None, ())
+            while solution is None and self.queue:
+                self.tree.check_time()
+                _, _, node = heapq.heappop(self.queue)
+                solution = self._expand(node)
+        except LimitReached as limit:
+            return self.tree.result(limit.status, None)
+        except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
+            return self.tree.result(Status.INTERRUPTED, None)
+        return self.tree.result(Status.SOLVED if solution else Status.EXHAUSTED, solution)
+
+    def _push(self, node: Node) -> None:
+        self.pushes += 1
+        heapq.heappush(self.queue, (self.evaluator.evaluate(node), self.pushes, node))
+
+    def _expand(self, node: Node) -> Node | None:
+        """Make the successor of ``node`` for its next relevant instance."""
+        instance = node.pending.pop(0)
+        node.successors_generated += 1
+        if node.pending:
+            self._push(node)
+        subgoal = Goal(instance.operator.precondition(), instance.operator)
+        return self._make(node.model, (subgoal, *node.goals), node, node.plan)
+
+    def _make(
+        self,
+        model: WorldModel,
+        goals: tuple[Goal, ...],
+        parent: Node | None,
+        plan: tuple[OperatorInstance, ...],
+        applied: OperatorInstance | None = None,
+    ) -> Node | None:
+        """Make a node and try its first goal; return the goal node if the task is solved.
+
+        Proved preconditions are applied in a loop rather than by recursion, since a chain
+        of applications can be as long as the goal list.
+        """
+        while True:
+            node = self.tree.new_node(model, goals, parent, plan, applied)
+            if (model, goals) in self.seen:
+                return None  # the same problem is already being worked on elsewhere
+            self.seen.add((model, goals))
+            first = goals[0]
+            result = self.goal_prover.prove(model, first.formula)
+            if not result.proved:
+                self._set_difference(node, result)
+                return None
+            if first.operator is None:
+                return node
+            operator = first.operator.bind(dict(result.answers[0]))
+            if not operator.is_ground or not operator.admits():
+                return None  # a parameter of the effects left unbound, or a binding refused
+            model, goals, parent = operator.apply(model), goals[1:], node
+            plan, applied = (*plan, *operator.steps()), operator
+
+    def _set_difference(self, node: Node, result: ProofResult) -> None:
+        negated = self.goal_prover.negated(node.goals[0].formula)
+        node.difference = self.differences.extract(result, negated)
+        if len(node.goals) >= self.max_goals:
+            return
+        on_goal_list = {goal.operator for goal in node.goals}
+        node.pending = [
+            found
+            for found in self.relevance.relevant(node.difference, node.model)
+            if found.operator not in on_goal_list
+        ]
+        if node.pending:
+            self._push(node)

@@ -1,0 +1,65 @@
+"""The STRIPS strategy: GPS-style means-ends analysis over (world model, goal list) nodes.
+
+As in the paper (II.B, III.C, Figure 2): when a node is made, its first goal is tried by
+the prover. If it is proved, the operator whose precondition it was is applied with the
+bindings the proof found, which makes a new node (its first goal is tried at once, and so
+on). If not, the uncompleted proof becomes the node's difference and the relevant operator
+instances for it are computed. The evaluator then picks which node gets its next successor:
+the precondition of its next relevant instance pushed onto its goal list. Successors are
+made one at a time, so a node stays in the queue while it has relevant instances left.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, ClassVar
+
+from attrs import field, frozen, validators
+
+from strips_framework.capabilities import ANSWERS, Requirement
+
+if TYPE_CHECKING:
+    from strips_framework.limits import Clock, Limits
+    from strips_framework.means_ends.components import (
+        DifferenceExtractor,
+        NodeEvaluator,
+        RelevanceFilter,
+    )
+    from strips_framework.result import Result
+    from strips_framework.worldmodel.problem import Problem
+    from strips_framework.worldmodel.proving import TheoremProver
+
+
+@frozen
+class MeansEndsSearch:
+    """Means-ends analysis as STRIPS does it.
+
+    ``max_goals`` bounds the goal list (the depth of subgoaling), which keeps the search
+    from regressing forever through ever deeper preconditions.
+    """
+
+    name: ClassVar[str] = "means-ends"
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+    requires: ClassVar[tuple[Requirement, ...]] = (
+        Requirement("prover", ANSWERS, "it applies each operator with the parameter "
+                    "bindings of its precondition's proof"),
+    )
+    max_goals: int = field(default=8, validator=[validators.instance_of(int), validators.gt(0)])
+
+    def search(
+        self,
+        problem: Problem,
+        prover: TheoremProver,
+        differences: DifferenceExtractor,
+        relevance: RelevanceFilter,
+        evaluator: NodeEvaluator,
+        limits: Limits,
+        clock: Clock | None = None,
+    ) -> Result:
+        from strips_framework.limits import Clock
+        from strips_framework.means_ends.goal_prover import GoalProver
+        from strips_framework.means_ends.run import MeansEndsRun
+
+        run = MeansEndsRun(self.max_goals, problem, GoalProver(problem, prover, limits.effort),
+                           differences, relevance, evaluator, limits,
+                           clock or Clock(limits.time))
+        return run.search()

@@ -1,0 +1,68 @@
+"""The growing search tree: node numbering, limits, and the final result."""
+
+from __future__ import annotations
+
+from attrs import define, field
+
+from strips_framework.limits import Clock, LimitReached, Limits
+from strips_framework.means_ends.goal_prover import GoalProver
+from strips_framework.means_ends.node import Goal, Node, path_to
+from strips_framework.means_ends.result import Tree, WorldModelStatistics
+from strips_framework.result import Result, Status
+from strips_framework.worldmodel.operators import OperatorInstance
+from strips_framework.worldmodel.world import WorldModel
+
+
+@define
+class SearchTree:
+    """``clock`` is the run's (see :class:`~strips_framework.limits.Clock`);
+    ``searching_since`` when this search began, for its own time in the statistics."""
+
+    limits: Limits
+    prover: GoalProver
+    clock: Clock
+    nodes: list[Node] = field(factory=list)
+    searching_since: float = field(init=False)
+
+    def __attrs_post_init__(self) -> None:
+        self.searching_since = self.clock.elapsed()
+
+    def check_time(self) -> None:
+        self.clock.check()
+
+    def new_node(
+        self,
+        model: WorldModel,
+        goals: tuple[Goal, ...],
+        parent: Node | None,
+        plan: tuple[OperatorInstance, ...],
+        applied: OperatorInstance | None = None,
+    ) -> Node:
+        if len(self.nodes) >= self.limits.nodes:
+            raise LimitReached(Status.NODE_LIMIT)
+        self.check_time()
+        node = Node(len(self.nodes), model, goals, parent, plan, applied)
+        self.nodes.append(node)
+        return node
+
+    def result(self, status: Status, solution: Node | None) -> Result:
+        path = path_to(solution)
+        elapsed = self.clock.elapsed()
+        statistics = WorldModelStatistics(
+            nodes=len(self.nodes),
+            applications=sum(1 for n in self.nodes if n.applied is not None),
+            path_nodes=len(path),
+            path_applications=sum(1 for n in path if n.applied is not None),
+            seconds=elapsed - self.searching_since,
+            proving_seconds=self.prover.seconds,
+            proof_attempts=self.prover.attempts,
+        )
+        plan = None if solution is None else tuple(step.ipc() for step in solution.plan)
+        return Result(
+            status,
+            plan,
+            None if plan is None else len(plan),
+            statistics,
+            elapsed,
+            tree=Tree(tuple(self.nodes), solution),
+        )

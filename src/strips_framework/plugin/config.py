@@ -1,0 +1,252 @@
+"""The TOML config (``strips.toml``): which implementations to use, their options, limits.
+
+    [strategy]
+    name = "means-ends"          # every key but 'name' is an option of the chosen class
+    max_goals = 8
+
+    [prover]
+    name = "resolution"
+
+    [evaluator]
+    name = "paper"
+
+    [heuristic]                  # for the strategies over ground tasks (PDDL)
+    name = "ff"
+
+    [learner]                    # for 'strips learn' (MACROPs)
+    name = "triangle-table"
+
+    [limits]
+    time = 60        # wall-clock seconds
+    nodes = 10000    # nodes generated (world-model strategies)
+    effort = 300     # prover effort per proof attempt
+    expansions = 100000   # states expanded (forward strategies); unlimited if absent
+    memory = 4096    # MiB (forward strategies and the CLI); unlimited if absent
+
+    [macrops]        # how 'solve --macrops' uses a library
+    instances = 3    # instances offered per relevant MACROP whose kernel holds
+    subgoals = false # also offer MACROPs whose kernel does not hold, as subgoals
+    effort = 2000    # clause-against-fact matches per kernel looked for
+
+    [execution]      # PLANEX's simulated world ('strips execute')
+    failure = 0.1    # chance that an action has no effect
+    disturbance = 0.05   # chance that the world changes after a step
+    seed = 0
+
+Every table is optional; missing ones take the defaults in :data:`DEFAULT_CHOICES`.
+Mistakes are reported with their key path and what was expected.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import attrs
+from attrs import frozen
+
+from strips_framework.errors import ConfigError, PluginError
+from strips_framework.limits import Limits
+from strips_framework.plugin.registry import KINDS, Registration, Registry
+from strips_framework.user_files import read_toml
+
+COMPONENTS = (
+    "strategy", "prover", "difference", "relevance", "evaluator", "heuristic", "learner"
+)
+DEFAULT_CHOICES = {
+    "strategy": "means-ends",
+    "prover": "resolution",
+    "difference": "uncompleted-proof",
+    "relevance": "add-list",
+    "evaluator": "paper",
+    "heuristic": "ff",
+    "learner": "triangle-table",
+}
+#: Tables that configure a use rather than a component: ``[execution]`` is PLANEX's fault
+#: model (``strips execute``, :mod:`strips_framework.macrops.planex`), ``[macrops]`` how a
+#: search uses a MACROP library (:class:`strips_framework.macrops.search.MacroUse`).
+SECTIONS = ("execution", "macrops")
+#: The strategy PDDL input gets when the config names none: what Fast Downward's users
+#: expect of ``strips solve DOMAIN PROBLEM`` (lazy greedy search with hFF).
+PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
+#: The config table that chooses a plugin kind, where it is not the kind itself: both
+#: kinds of strategy are named in ``[strategy]`` (so their names must not clash).
+TABLE_OF = {"ground-strategy": "strategy"}
+
+
+@frozen
+class Choice:
+    """An implementation picked by name, with the options to build it."""
+
+    kind: str
+    name: str
+    options: dict[str, Any] = attrs.field(factory=dict)
+
+
+@frozen
+class Config:
+    choices: dict[str, Choice]
+    limits: Limits
+    source: str = "<defaults>"
+    #: The kinds the config file chose itself (the others took their defaults).
+    chosen: frozenset[str] = frozenset()
+    #: The tables of :data:`SECTIONS`, as written (read by the commands that use them).
+    sections: dict[str, dict[str, Any]] = attrs.field(factory=dict)
+
+    @classmethod
+    def default(cls) -> Config:
+        return cls.from_dict({})
+
+    @classmethod
+    def from_file(cls, path: Path) -> Config:
+        return cls.from_dict(read_toml(path, "the config"), str(path))
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], source: str = "<config>") -> Config:
+        known = (*COMPONENTS, "limits", *SECTIONS)
+        for key in data:
+            if key not in known:
+                raise ConfigError(
+                    f"{source}: unknown key '{key}' (expected one of: {', '.join(known)})"
+                )
+        choices = {}
+        for kind in COMPONENTS:
+            table = data.get(kind, {})
+            if isinstance(table, str):  # shorthand: prover = "resolution"
+                table = {"name": table}
+            if not isinstance(table, dict):
+                raise ConfigError(
+                    f"{source}: '{kind}' must be a table or an implementation name, "
+                    f"got {_type_name(table)}"
+                )
+            options = dict(table)
+            name = options.pop("name", DEFAULT_CHOICES[kind])
+            if not isinstance(name, str):
+                raise ConfigError(f"{source}: '{kind}.name' must be a string, got {_type_name(name)}")
+            choices[kind] = Choice(kind, name, options)
+        limits_table = data.get("limits", {})
+        if not isinstance(limits_table, dict):
+            raise ConfigError(f"{source}: 'limits' must be a table, got {_type_name(limits_table)}")
+        limits = _instantiate(Limits, limits_table, "limits", source)
+        sections = {}
+        for key in SECTIONS:
+            table = data.get(key, {})
+            if not isinstance(table, dict):
+                raise ConfigError(f"{source}: '{key}' must be a table, got {_type_name(table)}")
+            sections[key] = table
+        chosen = frozenset(kind for kind in COMPONENTS if kind in data)
+        return cls(choices, limits, source, chosen, sections)
+
+    def for_pddl(self) -> Config:
+        """This config for PDDL input: the strategy defaults to :data:`PDDL_DEFAULT_STRATEGY`
+        unless the config chose one."""
+        if "strategy" in self.chosen or self.choices["strategy"].name == PDDL_DEFAULT_STRATEGY:
+            return self
+        choices = {**self.choices, "strategy": Choice("strategy", PDDL_DEFAULT_STRATEGY)}
+        return attrs.evolve(self, choices=choices)
+
+    def table_of(self, kind: str) -> str:
+        """The config table that chooses the implementation of plugin kind ``kind``."""
+        return TABLE_OF.get(kind, kind)
+
+    def choice(self, kind: str) -> Choice:
+        """What the config chose for plugin kind ``kind``."""
+        return self.choices[self.table_of(kind)]
+
+    def strategy_kind(self, registry: Registry) -> str:
+        """``"ground-strategy"`` when ``[strategy]`` names a ground-task strategy,
+        ``"strategy"`` when it names a world-model one."""
+        name = self.choices["strategy"].name
+        ground = name in registry.names("ground-strategy")
+        model = name in registry.names("strategy")
+        if ground and model:
+            raise PluginError(
+                f"strategy {name!r} is registered both as a world-model and as a "
+                "ground-task strategy; one plugin must rename its class"
+            )
+        if ground:
+            return "ground-strategy"
+        if not model:
+            available = ", ".join(sorted(registry.names("strategy") + registry.names("ground-strategy")))
+            raise PluginError(
+                f"{self.source}: 'strategy.name': search strategy {name!r} is not registered "
+                f"(available: {available}); 'strips plugins' lists them"
+            )
+        return "strategy"
+
+    def section(self, cls: type, key: str) -> Any:
+        """``cls`` built from the ``[key]`` table (one of :data:`SECTIONS`), with wrong keys
+        and values reported by key path."""
+        return _instantiate(cls, self.sections.get(key, {}), key, self.source)
+
+    def build(self, registry: Registry, kind: str) -> Any:
+        """An instance of the implementation chosen for ``kind``, with its options."""
+        registration = self.registration(registry, kind)
+        table = self.table_of(kind)
+        return _instantiate(registration.cls, self.choice(kind).options, table, self.source, registration)
+
+    def registration(self, registry: Registry, kind: str) -> Registration:
+        """The registered implementation chosen for ``kind``; an unknown name chosen by
+        the config file is reported at its key."""
+        table = self.table_of(kind)
+        try:
+            return registry.get(kind, self.choice(kind).name)
+        except PluginError as error:
+            if table not in self.chosen:
+                raise  # a default: no key of the config file to point at
+            raise PluginError(f"{self.source}: '{table}.name': {error}") from None
+
+
+_NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
+          int: "an integer", float: "a float"}
+
+
+def _type_name(value: object) -> str:
+    return _NAMES.get(type(value), type(value).__name__)
+
+
+def _instantiate(
+    cls: type,
+    options: dict[str, Any],
+    path: str,
+    source: str,
+    registration: Registration | None = None,
+) -> Any:
+    """``cls(**options)``, with wrong keys and values reported by key path."""
+    what = f"{KINDS[registration.kind][1]} '{registration.name}'" if registration else f"'{path}'"
+    fields = {a.name: a for a in attrs.fields(cls) if a.init} if attrs.has(cls) else {}
+    for key in options:
+        if key not in fields:
+            expected = ", ".join(sorted(fields)) or "none"
+            raise ConfigError(
+                f"{source}: unknown key '{path}.{key}': {what} has no option '{key}' "
+                f"(options: {expected})"
+            )
+    for key, value in options.items():
+        default = fields[key].default
+        if type(default) is float and type(value) is int:
+            options = {**options, key: float(value)}
+    try:
+        return cls(**options)
+    except (TypeError, ValueError) as error:
+        raise ConfigError(f"{source}: bad value for {_explain(error, path, options)}") from None
+
+
+def _explain(error: TypeError | ValueError, path: str, options: dict[str, Any]) -> str:
+    """``'path.key': what was expected (got value)`` from an attrs validator's error.
+
+    attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``;
+    other validators raise with a message naming the attribute in quotes.
+    """
+    args = error.args
+    attribute = next((a for a in args if isinstance(a, attrs.Attribute)), None)
+    key = attribute.name if attribute else next(
+        (k for k in options if f"'{k}'" in str(args[0])), None
+    )
+    where = f"'{path}.{key}'" if key else f"'{path}'"
+    if attribute is not None and len(args) == 4:
+        expected = args[2] if isinstance(args[2], tuple) else (args[2],)
+        names = " or ".join(_type_name(t()) if t in _NAMES else t.__name__ for t in expected)
+        return f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
+    got = f" (got {options[key]!r})" if key in options else ""
+    return f"{where}: {args[0]}{got}"

@@ -1,0 +1,196 @@
+"""What a theorem prover is asked and what it answers.
+
+STRIPS asks one kind of question (paper, III.A): does the goal wff G(p) follow from the
+world model M, and for which instance p' of its parameters? A prover refutes
+``M ∪ ¬G(p)``; the clauses of ¬G(p) are the set of support. When it fails within its
+effort bound, the clauses it derived from ¬G(p) are the *uncompleted proof*, from which
+the difference extractor computes the node's difference (III.C).
+
+A search asks that question about thousands of world models that all share one M0 and
+differ from it by a few ADDITIONS and DELETIONS (III.D). So a prover is *opened* once per
+problem on M0 (:meth:`TheoremProver.open`), which validates, clausifies and indexes M0
+once, and the :class:`ProverSession` it returns is asked about world models: it sees a
+model as M0 with its additions made visible and its deletions (and the derived clauses
+resting on them) hidden, without copying M0. A one-off question (a TPTP problem, the
+conformance kit) is a :class:`ProofTask`, answered by :meth:`TheoremProver.prove`.
+A prover that implements only ``prove`` still works: :func:`open_session` wraps it in a
+:class:`TaskSession`, which hands it each model as a fresh task (correct, but each attempt
+then costs time linear in |M0|).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from typing import Any, ClassVar, Protocol
+
+from attrs import Attribute, field, frozen, validators
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import Param, Term
+from strips_framework.worldmodel.world import InitialModel, WorldModel
+
+Answer = tuple[tuple[Param, Term], ...]
+
+
+def check_clauses(what: str, clauses: Iterable[object]) -> None:
+    """Refuse a malformed clause (``TypeError``/``ValueError`` naming ``what[number]``)."""
+    for number, clause in enumerate(clauses, start=1):
+        if not isinstance(clause, Clause):
+            raise TypeError(f"{what}[{number}] must be a Clause, not {type(clause).__name__}")
+        problem = _malformed(clause)
+        if problem:
+            raise ValueError(f"{what}[{number}] ({clause!r}): {problem}")
+
+
+def _check_clauses(_task: Any, attribute: Attribute, clauses: Iterable[object]) -> None:
+    check_clauses(f"ProofTask.{attribute.name}", clauses)
+
+
+def _malformed(clause: Clause) -> str | None:
+    """What is wrong with a clause's literals, or ``None``. Not cached: equal clauses may
+    differ in type (``1 == True``), and checking costs about 2% of a small proof."""
+    for literal in clause.literals:
+        if not (isinstance(literal, tuple) and len(literal) == 2 and type(literal[0]) is bool):
+            return f"a literal must be a pair (positive: bool, atom), got {literal!r}"
+        atom = literal[1]
+        if type(atom) is not tuple or not atom or type(atom[0]) is not str or not atom[0]:
+            return f"an atom must be a tuple (predicate, *args), got {atom!r}"
+        bad = next((t for arg in atom[1:] for t in _bad_terms(arg)), None)
+        if bad is not None:
+            return (
+                f"{bad!r} in {atom!r} is not a term (expected a variable int >= 0, a "
+                "constant str, a Param or a tuple (functor, *args))"
+            )
+    return None
+
+
+def _bad_terms(term: object) -> Iterable[object]:
+    if type(term) is tuple:
+        if not term or type(term[0]) is not str:
+            yield term
+        else:
+            for arg in term[1:]:
+                yield from _bad_terms(arg)
+    elif not (type(term) is str and term or type(term) is Param or type(term) is int and term >= 0):
+        yield term
+
+
+@frozen
+class ProofTask:
+    """One question for a prover.
+
+    ``axioms`` is the world model (or a TPTP problem's axioms); ``negated_goal`` is the set
+    of support. ``effort`` bounds the work per attempt in the prover's own unit (for the
+    resolution prover: given clauses processed). ``max_answers`` > 1 asks the prover to go
+    on after the first refutation and collect distinct parameter bindings. With
+    ``unique_names`` distinct constants denote distinct objects, so ``a = b`` is false for
+    constants ``a`` and ``b`` (the paper's "predicate evaluation" of equality).
+
+    A malformed task is refused here (``TypeError``/``ValueError`` naming the clause and
+    what was expected), so no prover ever sees one.
+    """
+
+    axioms: tuple[Clause, ...] = field(converter=tuple, validator=_check_clauses)
+    negated_goal: tuple[Clause, ...] = field(converter=tuple, validator=_check_clauses)
+    effort: int = field(default=1000, validator=[validators.instance_of(int), validators.ge(1)])
+    max_answers: int = field(default=1, validator=[validators.instance_of(int), validators.ge(1)])
+    unique_names: bool = field(default=False, validator=validators.instance_of(bool))
+
+
+#: SZS statuses a prover reports (https://tptp.org/TPTP/TPTP/SZSOntology): ``Unsatisfiable``
+#: when the clauses were refuted, ``Satisfiable`` when the set of support saturated without
+#: a refutation, ``GaveUp`` when the effort bound ran out first.
+PROVED, SATURATED, GAVE_UP = "Unsatisfiable", "Satisfiable", "GaveUp"
+
+
+@frozen
+class ProofResult:
+    """A prover's answer.
+
+    ``answers`` holds one parameter binding per refutation found (empty unless proved);
+    ``uncompleted`` holds the negated goal and its retained descendants when no proof was
+    found (empty when proved); ``proof`` lists the clauses of the first refutation, premises
+    first, when the prover keeps them.
+    """
+
+    status: str
+    answers: tuple[Answer, ...] = ()
+    uncompleted: tuple[Clause, ...] = ()
+    effort_used: int = 0
+    proof: tuple[Clause, ...] = ()
+
+    @property
+    def proved(self) -> bool:
+        return self.status == PROVED
+
+
+class ProverSession(Protocol):
+    """A prover opened on one M0, asked about the world models built on it.
+
+    ``prove(model, negated_goal, effort, max_answers)`` answers exactly what
+    ``prover.prove(ProofTask(tuple(model.clauses()), negated_goal, effort, max_answers,
+    unique_names))`` would (the conformance kit checks this over long random sequences of
+    models); only its cost may differ. ``model.initial`` is always the M0 the session was
+    opened on.
+    """
+
+    def prove(
+        self,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+    ) -> ProofResult:
+        """Try to refute the clauses visible in ``model`` ∪ ``negated_goal``."""
+        ...
+
+
+class TheoremProver(Protocol):
+    """A prover implementation, registered through ``strips_register_provers``.
+
+    Implementations are attrs classes whose fields are their options (the config passes
+    them as keyword arguments); ``name`` is what a config names them by. ``open`` is
+    optional (see :func:`open_session`); a prover that can index M0 once implements it.
+    """
+
+    name: ClassVar[str]
+
+    def prove(self, task: ProofTask) -> ProofResult:
+        """Try to refute ``task.axioms`` ∪ ``task.negated_goal``."""
+        ...
+
+
+def open_session(prover: TheoremProver, initial: InitialModel, unique_names: bool) -> ProverSession:
+    """A session of ``prover`` on M0: its own (``prover.open``) if it has one, else a
+    :class:`TaskSession`. M0's clauses are validated here, once."""
+    check_clauses("M0", initial.clauses)
+    opener = getattr(prover, "open", None)
+    if opener is None:
+        return TaskSession(prover, unique_names)
+    session: ProverSession = opener(initial, unique_names)
+    return session
+
+
+class TaskSession:
+    """The adapter for a prover written for one :class:`ProofTask` at a time: each model
+    becomes a fresh task over its visible clauses."""
+
+    def __init__(self, prover: TheoremProver, unique_names: bool) -> None:
+        self.prover = prover
+        self.unique_names = unique_names
+
+    def prove(
+        self,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+    ) -> ProofResult:
+        task = ProofTask(
+            axioms=tuple(model.clauses()),
+            negated_goal=tuple(negated_goal),
+            effort=effort,
+            max_answers=max_answers,
+            unique_names=self.unique_names,
+        )
+        return self.prover.prove(task)

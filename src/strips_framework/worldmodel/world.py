@@ -1,0 +1,166 @@
+"""World models as the paper stores them (III.B, III.D).
+
+All models share one :class:`InitialModel` (M0), which is never copied. A
+:class:`WorldModel` is M0 plus two short lists: ``deletions`` (indices of M0 clauses no
+longer present) and ``additions`` (ground atoms present but not in M0). A derived clause
+of M0 is visible only while every primitive clause it rests on is still present.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from attrs import field, frozen
+
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.cnf import SkolemNames, clausify
+from strips_framework.logic.terms import WILDCARD, Atom
+from strips_framework.worldmodel.problem import Problem
+
+#: Where facts are filed: ``(predicate, arity)``, or that and an argument ``position`` with
+#: the constant (or ``(functor, arity)``) found there.
+_FactKey = tuple[str, int] | tuple[str, int, int, object]
+
+
+@frozen(eq=False)
+class InitialModel:
+    """M0: its clauses, and for each derived clause the indices of its supports.
+
+    ``facts`` maps each ground unit fact of M0 to its index in ``clauses``, so operators
+    can find what to delete without scanning; ``dependents`` maps a clause index to the
+    derived clauses resting on it, so a model's hidden clauses are found from its
+    deletions alone (:meth:`WorldModel.hidden`). ``_filed`` files the facts by predicate
+    and by each argument, for :meth:`WorldModel.facts_matching`.
+    """
+
+    clauses: tuple[Clause, ...] = field(converter=tuple)
+    supports: dict[int, frozenset[int]] = field(factory=dict)
+    facts: dict[Atom, int] = field(init=False)
+    dependents: dict[int, tuple[int, ...]] = field(init=False)
+    _filed: dict[_FactKey, list[Atom]] = field(init=False, repr=False)
+
+    def __attrs_post_init__(self) -> None:
+        facts = {
+            c.literals[0][1]: i
+            for i, c in enumerate(self.clauses)
+            if c.is_unit and c.literals[0][0] and i not in self.supports
+        }
+        object.__setattr__(self, "facts", facts)
+        dependents: dict[int, list[int]] = {}
+        for derived, rests_on in self.supports.items():
+            for index in rests_on:
+                dependents.setdefault(index, []).append(derived)
+        object.__setattr__(self, "dependents", {i: tuple(d) for i, d in dependents.items()})
+        filed: dict[_FactKey, list[Atom]] = {}
+        for atom in facts:
+            predicate, arity = atom[0], len(atom) - 1
+            filed.setdefault((predicate, arity), []).append(atom)
+            for position, arg in enumerate(atom[1:]):
+                symbol = (arg[0], len(arg)) if type(arg) is tuple else arg
+                filed.setdefault((predicate, arity, position, symbol), []).append(atom)
+        object.__setattr__(self, "_filed", filed)
+
+    def candidates(self, pattern: Atom) -> list[Atom]:
+        """M0's facts with ``pattern``'s predicate and its constant at the most selective
+        argument position where it has one (variables, parameters and ``$`` match
+        anything): a superset of the facts that match, found without scanning M0."""
+        predicate, arity = pattern[0], len(pattern) - 1
+        best = self._filed.get((predicate, arity), [])
+        for position, arg in enumerate(pattern[1:]):
+            kind = type(arg)
+            if kind is str and arg != WILDCARD:
+                symbol: object = arg
+            elif kind is tuple:
+                symbol = (arg[0], len(arg))
+            else:
+                continue
+            bucket = self._filed.get((predicate, arity, position, symbol), [])
+            if len(bucket) < len(best):
+                best = bucket
+        return best
+
+
+@frozen(cache_hash=True)
+class WorldModel:
+    """M0 with ``deletions`` (indices into M0) and ``additions`` (ground atoms)."""
+
+    initial: InitialModel = field(eq=False, hash=False, repr=False)
+    deletions: frozenset[int] = frozenset()
+    additions: frozenset[Atom] = frozenset()
+
+    def clauses(self) -> Iterator[Clause]:
+        """The visible clauses: M0 less deletions and stale derived clauses, plus additions."""
+        deleted = self.deletions
+        supports = self.initial.supports
+        for i, clause in enumerate(self.initial.clauses):
+            if i in deleted:
+                continue
+            rests_on = supports.get(i)
+            if rests_on is not None and not rests_on.isdisjoint(deleted):
+                continue
+            yield clause
+        yield from self.added_clauses()
+
+    def added_clauses(self) -> tuple[Clause, ...]:
+        """The additions as unit clauses, in a fixed order (a prover's search, and so its
+        answers, must not depend on hash order)."""
+        return tuple(Clause(((True, atom),), label="added") for atom in sorted(self.additions, key=repr))
+
+    def hidden(self) -> set[int]:
+        """The indices of M0's clauses this model does not see: its deletions and the
+        derived clauses resting on one. Costs time in the deletions, not in |M0|."""
+        hidden = set(self.deletions)
+        dependents = self.initial.dependents
+        for index in self.deletions:
+            hidden.update(dependents.get(index, ()))
+        return hidden
+
+    def holds(self, atom: Atom) -> bool:
+        """Whether the ground primitive ``atom`` is present as a fact (no reasoning)."""
+        if atom in self.additions:
+            return True
+        index = self.initial.facts.get(atom)
+        return index is not None and index not in self.deletions
+
+    def facts(self) -> Iterator[Atom]:
+        """The ground facts present: M0's undeleted facts, then the additions."""
+        for atom, index in self.initial.facts.items():
+            if index not in self.deletions:
+                yield atom
+        yield from self.additions
+
+    def facts_matching(self, pattern: Atom) -> Iterator[Atom]:
+        """The facts present that may match ``pattern`` (see
+        :meth:`InitialModel.candidates`); callers apply their own exact test. Costs time
+        in the candidates and the additions, not in |M0|."""
+        index = self.initial.facts
+        deleted = self.deletions
+        for atom in self.initial.candidates(pattern):
+            if index[atom] not in deleted:
+                yield atom
+        predicate, size = pattern[0], len(pattern)
+        for atom in self.additions:
+            if atom[0] == predicate and len(atom) == size:
+                yield atom
+
+    def changed(self, deleted: frozenset[Atom], added: frozenset[Atom]) -> WorldModel:
+        """The model after deleting then adding ground atoms (III.D)."""
+        facts = self.initial.facts
+        new_deletions = self.deletions | {facts[a] for a in deleted if a in facts}
+        additions = (self.additions - deleted) | {a for a in added if a not in facts}
+        # An atom of M0 that was deleted and is added back is visible again.
+        revived = {facts[a] for a in added if a in facts}
+        return WorldModel(self.initial, new_deletions - revived, frozenset(additions))
+
+
+def initial_model(problem: Problem, skolem: SkolemNames) -> InitialModel:
+    """M0 of ``problem``: facts, clausified axioms, and derived facts with their supports."""
+    clauses = [Clause(((True, atom),), label="fact") for atom in problem.facts]
+    index = {atom: i for i, atom in enumerate(problem.facts)}
+    for number, axiom in enumerate(problem.axioms, start=1):
+        clauses.extend(clausify(axiom, label=f"axiom {number}", skolem=skolem))
+    supports: dict[int, frozenset[int]] = {}
+    for fact in problem.derived:
+        supports[len(clauses)] = frozenset(index[atom] for atom in fact.supports)
+        clauses.append(Clause(((True, fact.atom),), label="derived"))
+    return InitialModel(clauses, supports)
