@@ -8,7 +8,9 @@ from attrs.exceptions import FrozenInstanceError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_framework.worldmodel.world import InitialModel
 from strips_resolution_prover import ResolutionProver
+from strips_resolution_prover.auto import plan
 
 M, N = Param("m"), Param("n")
 
@@ -238,3 +240,27 @@ def test_literal_selection_saturates_without_usable_clauses() -> None:
         [neg("P", 0), pos("P", ("f", 0))], [pos("P", "a")], [neg("P", ("f", ("f", "a")))]
     )
     assert prove([], refutable).proved
+
+
+def test_automatic_mode_picks_the_calculus_from_the_features() -> None:
+    fact, rule = pos("P", "a"), [neg("P", 0), pos("Q", 0)]
+    # Definite Horn, no equality, half of it ground facts: a world model, set of support.
+    assert plan(clauses([fact], rule)) == "set-of-support"
+    # A rule-only, non-Horn or equational axiom set: saturation first, then SOS.
+    assert plan(clauses(rule)) == "schedule"
+    assert plan(clauses([fact], [pos("Q", 0), pos("R", 0)])) == "schedule"
+    assert plan(clauses([fact], [pos("=", "a", "b")])) == "schedule"
+    assert plan([]) == "saturation"
+    # The schedule saturates first: N(x) -> N(s(x)) from N(z) saturates under literal
+    # selection (every clause resolves on its one negative literal), while the set of
+    # support alone runs out of effort on ~N(z), N(s(z)) ... backward.
+    axioms = clauses([neg("N", ("s", 0)), pos("N", 0)])
+    goal = clauses([neg("N", "z")])
+    assert ResolutionProver().prove(ProofTask(axioms, goal, effort=50)).status == SATURATED
+    assert prove(axioms, goal, effort=50).status == GAVE_UP
+    # A session on a world model runs the set of support on every attempt, on M0 indexed
+    # once; on other axioms each attempt is a task of its own for the automatic mode.
+    world = ResolutionProver().open(InitialModel(clauses([fact], rule)), unique_names=False)
+    assert (world.options.schedule, world.options.set_of_support) == (False, True)
+    other = ResolutionProver().open(InitialModel(axioms), unique_names=False)
+    assert other.options.schedule

@@ -13,7 +13,7 @@ import pytest
 
 from strips_framework.formats.tptp import parse_tptp, szs_status
 from strips_framework.logic.clauses import Clause
-from strips_framework.worldmodel.proving import GAVE_UP, PROVED
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED
 from strips_resolution_prover import ResolutionProver
 from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.kbo import greater
