@@ -137,9 +137,11 @@ def paramodulants(
 ) -> Iterator[PClause]:
     """Paramodulants between the given clause (renamed apart) and each processed partner.
 
-    ``saturating``: superposition with literal selection. Every equation is ordered,
-    variable sides rewrite, a clause with a selected literal (a negative one) is never
-    the equation's premise and is rewritten only in that literal."""
+    ``saturating``: superposition with literal selection. Every equation is ordered, a
+    clause with a selected literal (a negative one) is rewritten only in that literal,
+    and variable sides rewrite from clauses without one. (Superposition needs no
+    equation of a clause with a selected literal at all; the others are kept since they
+    find proofs sooner, PUZ001+1 in 74 given clauses instead of 451.)"""
     for partner in partners:
         if partner.dead:
             continue
@@ -152,14 +154,15 @@ def paramodulants(
             (partner.literals, renamed, saturating or partner.sos),
         )
         for source, target, ordered in sides:
-            if saturating and any(not positive for positive, _ in source):
-                continue
+            # Superposition needs no equation from a clause with a selected literal;
+            # taking them all but variable sides costs little and finds proofs sooner.
+            variables = saturating and all(positive for positive, _ in source)
             positions = eligible(target, saturating)
             for i, (positive, atom) in enumerate(source):
                 if not positive or not is_equality(atom):
                     continue
                 rest = source[:i] + source[i + 1 :]
-                for equation in _rewrite_sides(atom, ordered, saturating):
+                for equation in _rewrite_sides(atom, ordered, variables):
                     yield from _into(equation, rest, target, base, parents, limits, positions)
 
 
