@@ -41,7 +41,9 @@ DEFAULT_EXAMPLES = 300
 EXAMPLES = int(os.environ.get("STRIPS_DIFFERENTIAL_EXAMPLES", DEFAULT_EXAMPLES))
 RESOLUTION = ResolutionProver()
 #: By z3's mode: one-shot solvers, or one incremental solver per task.
-PROVERS = {incremental: provers(with_e=True, z3_incremental=incremental) for incremental in (False, True)}
+PROVERS = {
+    incremental: provers(with_e=True, z3_incremental=incremental) for incremental in (False, True)
+}
 #: What each run saw, for the report at the end (decided the same way, answers checked).
 TALLY: Counter[str] = Counter()
 

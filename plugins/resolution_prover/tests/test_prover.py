@@ -8,7 +8,7 @@ from attrs.exceptions import FrozenInstanceError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
-from strips_framework.worldmodel.world import InitialModel
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 from strips_resolution_prover.auto import plan
 
@@ -201,7 +201,8 @@ def test_size_limits_discard_large_clauses_and_void_saturation() -> None:
         assert result.status == GAVE_UP
         assert result.effort_used < 100
     wide = clauses([neg("N", 0), pos("M", 0), pos("K", 0)])
-    result = ResolutionProver(max_clause_literals=1, schedule=False).prove(ProofTask(wide, goal, effort=100))
+    prover = ResolutionProver(max_clause_literals=1, schedule=False)
+    result = prover.prove(ProofTask(wide, goal, effort=100))
     assert result.status == GAVE_UP
 
 
@@ -261,6 +262,15 @@ def test_automatic_mode_picks_the_calculus_from_the_features() -> None:
     # A session on a world model runs the set of support on every attempt, on M0 indexed
     # once; on other axioms each attempt is a task of its own for the automatic mode.
     world = ResolutionProver().open(InitialModel(clauses([fact], rule)), unique_names=False)
-    assert (world.options.schedule, world.options.set_of_support) == (False, True)
+    assert (world.calculus.schedule, world.calculus.set_of_support) == (False, True)
+    # Horn but not a fact base: the session's attempt is the schedule's, as for the task.
     other = ResolutionProver().open(InitialModel(axioms), unique_names=False)
-    assert other.options.schedule
+    assert other.prove(WorldModel(other.initial), goal, effort=50).status == SATURATED
+    # An equation in the goal makes it the schedule's (SOS paramodulation would grow
+    # f(f(...)) into Q(f(a)) for the whole effort; superposition saturates at once).
+    assert plan(clauses([fact], rule), clauses([pos("=", 0, "a")])) == "schedule"
+    grows = clauses([pos("Q", ("f", "a"))], [pos("R", "b", "a")], [pos("S")])
+    goal = clauses([neg("Q", 0), pos("=", "a", 0)])
+    result = ResolutionProver().prove(ProofTask(grows, goal, effort=2000))
+    assert result.status == SATURATED
+    assert result.effort_used < 50

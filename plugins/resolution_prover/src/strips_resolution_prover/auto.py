@@ -14,10 +14,13 @@ them (III.A: never a term with a variable), and saturates satisfiable sets.
 So, from the features of the task (:func:`plan`):
 
 - **no axioms** (every clause is support): saturation, there is nothing to keep apart;
-- **a world model** (Horn axioms, each with a positive literal, no equality, at least
-  half of them ground facts): the set of support on the whole effort. SOS is complete
-  there (:mod:`.completeness`), it is backward chaining over the facts, and a session
-  keeps M0 indexed for it (STRIPS asks thousands of such questions);
+- **a world model** (Horn axioms, each with a positive literal, at least half of them
+  ground facts, and no equality in axioms or goal): the set of support on the whole
+  effort. SOS is complete there (:mod:`.completeness`), it is backward chaining over the
+  facts, and a session keeps M0 indexed for it (STRIPS asks thousands of such
+  questions). With equality SOS is neither complete nor cheap (paramodulation into the
+  axioms is unordered; ``~Q(x) | a = x`` over ``Q(f(a))`` grows ``f(f(...))`` for
+  thousands of given clauses, where superposition saturates in 15);
 - **otherwise**: saturation on :data:`SATURATION_SHARE` of the effort, then the set of
   support on the rest, as E's ``--auto-schedule`` runs strategies in turn. The first
   that decides answers; if neither does, the goal-directed run's uncompleted proof is the
@@ -28,7 +31,7 @@ The run is as deterministic as each of its parts, and ``effort_used`` is their s
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING, Literal
 
 from attrs import evolve
@@ -47,32 +50,44 @@ SATURATION_SHARE = 2 / 3
 Plan = Literal["saturation", "set-of-support", "schedule"]
 
 
-def is_world_model(axioms: Sequence[Clause]) -> bool:
-    """Whether ``axioms`` look like a STRIPS world model: definite Horn clauses without
-    equality, at least half of them ground facts."""
-    facts = 0
-    for clause in axioms:
+def definite_facts(clauses: Sequence[Clause]) -> list[bool] | None:
+    """Per clause, whether it is a ground fact, if every clause is definite Horn without
+    equality (``None`` otherwise): the shape a world model has."""
+    flags: list[bool] = []
+    for clause in clauses:
         positives = 0
         for positive, atom in clause.literals:
             if atom[0] == EQUALITY:
-                return False
+                return None
             positives += positive
         if positives != 1:
-            return False
-        facts += len(clause.literals) == 1 and _is_ground(clause.literals[0][1])
-    return 2 * facts >= len(axioms)
+            return None
+        flags.append(len(clause.literals) == 1 and _is_ground(clause.literals[0][1]))
+    return flags
 
 
 def _is_ground(atom: tuple) -> bool:
     return all(type(arg) is str or (type(arg) is tuple and _is_ground(arg)) for arg in atom[1:])
 
 
-def plan(axioms: Sequence[Clause]) -> Plan:
-    """The calculus the automatic mode runs on a task with these axioms."""
+def mentions_equality(clauses: Iterable[Clause]) -> bool:
+    return any(atom[0] == EQUALITY for clause in clauses for _, atom in clause.literals)
+
+
+def is_world_model(facts: int, clauses: int) -> bool:
+    """Whether definite Horn axioms with ``facts`` ground facts among ``clauses`` are a
+    world model: at least half of them facts."""
+    return 2 * facts >= clauses
+
+
+def plan(axioms: Sequence[Clause], negated_goal: Sequence[Clause] = ()) -> Plan:
+    """The calculus the automatic mode runs on a task (see the module docstring)."""
     if not axioms:
         return "saturation"
-    if is_world_model(axioms):
-        return "set-of-support"
+    flags = definite_facts(axioms)
+    if flags is not None and is_world_model(sum(flags), len(flags)):
+        if not mentions_equality(negated_goal):
+            return "set-of-support"
     return "schedule"
 
 
@@ -80,7 +95,7 @@ def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResul
     """``task`` under the calculus :func:`plan` picks (see the module docstring)."""
     sos = evolve(prover, schedule=False, set_of_support=True)
     saturate = evolve(prover, schedule=False, set_of_support=False)
-    chosen = plan(task.axioms)
+    chosen = plan(task.axioms, task.negated_goal)
     if chosen == "set-of-support":
         return sos.prove(task)
     if chosen == "saturation" or task.effort < 2:

@@ -51,8 +51,8 @@ def incompleteness(
     """Why saturation of this task would not show satisfiability, or ``None`` if it would.
 
     ``set_of_support``: there were axioms and they were kept out of the set of support
-    (never resolved with each other); ``uses_equality``: some clause has ``=``; ``goal``: the negated goal,
-    looked at for parameters. Discarded clauses are the caller's to check, since they are
+    (never resolved with each other); ``uses_equality``: some clause has ``=``; ``goal``:
+    the negated goal, looked at for parameters. Discarded clauses are the caller's to check, since they are
     known only after the search.
     """
     if uses_equality:

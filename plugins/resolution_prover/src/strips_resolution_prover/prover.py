@@ -44,7 +44,12 @@ from strips_framework.worldmodel.proving import (
     ProofTask,
 )
 from strips_framework.worldmodel.world import InitialModel, WorldModel
-from strips_resolution_prover.auto import is_world_model, prove_automatically
+from strips_resolution_prover.auto import (
+    definite_facts,
+    is_world_model,
+    mentions_equality,
+    prove_automatically,
+)
 from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.equality import (
@@ -119,17 +124,8 @@ class ResolutionProver:
         )
 
     def open(self, initial: InitialModel, unique_names: bool) -> ResolutionSession:
-        """A session on M0, which is imported and indexed here, once. In the automatic
-        mode a world model gets the set of support for every attempt (:mod:`.auto`); the
-        additions of a model are ground facts, which keep it one."""
-        if self.schedule and initial.clauses and is_world_model(initial.clauses):
-            sos = evolve(self, schedule=False, set_of_support=True)
-            return ResolutionSession(sos, initial, unique_names)
+        """A session on M0, which is imported and indexed here, once."""
         return ResolutionSession(self, initial, unique_names)
-
-
-def _mentions_equality(clauses: Iterable[Clause]) -> bool:
-    return any(is_equality(atom) for clause in clauses for _, atom in clause.literals)
 
 
 def _simplify(
@@ -218,10 +214,13 @@ class _Axioms(_Retained):
         self.by_origin: dict[int, list[int]] = {}
         self.refutations: list[PClause] = []
         self.limits = Limits(options.max_weight)
-        self.uses_equality = _mentions_equality(initial.clauses)
+        self.uses_equality = mentions_equality(initial.clauses)
         #: Whether each attempt takes all its axioms afresh (see the module docstring).
-        # (Equations in M0 would rewrite clauses whether or not the model hides them.)
-        self.fresh = fresh or not options.set_of_support or self.uses_equality
+        # (Equations in M0 would rewrite clauses whether or not the model hides them; the
+        # automatic mode, when a session keeps it, runs each attempt as a task.)
+        self.fresh = (
+            fresh or options.schedule or not options.set_of_support or self.uses_equality
+        )
         #: Saturation shows satisfiability only over axioms known to be satisfiable
         #: (:mod:`.completeness`); M0's verdict is made once, for all its models. Every
         #: clause has a positive literal in ``all_positive`` M0s, and additions keep that.
@@ -265,9 +264,30 @@ class ResolutionSession:
         self.options = options
         self.initial = initial
         self.unique_names = unique_names
-        self.axioms = _Axioms(options, initial, unique_names)
+        #: In the automatic mode, which M0 clauses are facts if M0 has a world model's
+        #: shape: an attempt on a model that is still a world model (:func:`.auto.plan`,
+        #: decided from counts, not by walking the model) runs the set of support here.
+        self.facts = definite_facts(initial.clauses) if options.schedule else None
+        self.fact_count = sum(self.facts) if self.facts is not None else 0
+        self.calculus = options
+        if self.facts is not None:
+            self.calculus = evolve(options, schedule=False, set_of_support=True)
+        self.axioms = _Axioms(self.calculus, initial, unique_names)
         #: No axioms of its own: the base of an attempt that takes its axioms afresh.
-        self.none = _Axioms(options, InitialModel(()), unique_names, fresh=True)
+        self.none = _Axioms(self.calculus, InitialModel(()), unique_names, fresh=True)
+
+    def _is_world_model(
+        self, hidden: AbstractSet[int], added: Sequence[Clause], negated_goal: Sequence[Clause]
+    ) -> bool:
+        """:func:`.auto.plan`'s test on the model's visible clauses, from M0's counts."""
+        if self.facts is None or mentions_equality(negated_goal):
+            return False
+        added_facts = definite_facts(added)
+        if added_facts is None:
+            return False
+        visible = len(self.facts) - len(hidden) + len(added)
+        facts = self.fact_count - sum(self.facts[i] for i in hidden) + sum(added_facts)
+        return visible > 0 and is_world_model(facts, visible)
 
     def prove(
         self,
@@ -278,16 +298,17 @@ class ResolutionSession:
     ) -> ProofResult:
         """Refute the clauses visible in ``model`` ∪ ``negated_goal`` within ``effort``
         given clauses."""
-        if self.options.schedule:  # the calculus depends on the attempt: a task of its own
+        added = model.added_clauses()
+        hidden_m0 = model.hidden()
+        if self.options.schedule and not self._is_world_model(hidden_m0, added, negated_goal):
+            # The automatic mode's schedule: each attempt is a task of its own.
             task = ProofTask(model.clauses(), negated_goal, effort, max_answers, self.unique_names)
             return prove_automatically(self.options, task)
         # Unique names instantiate equations over the constants the visible clauses
         # name, which a model's deletions change: such an attempt takes M0 afresh.
-        added = model.added_clauses()
         fresh = self.axioms.fresh or (
-            self.unique_names and _mentions_equality(chain(negated_goal, added))
+            self.unique_names and mentions_equality(chain(negated_goal, added))
         )
-        hidden_m0 = model.hidden()
         axioms = self.axioms
         if not fresh:
             hidden = {cid for index in hidden_m0 for cid in axioms.by_origin.get(index, ())}
@@ -295,7 +316,7 @@ class ResolutionSession:
         else:
             axioms, hidden, extra = self.none, set(), tuple(model.clauses())
         attempt = _Saturation(
-            self.options,
+            self.calculus,
             axioms,
             hidden,
             extra,
@@ -345,7 +366,7 @@ class _Saturation:
         # incomplete with a set of support, whose usable clauses never meet each other.
         self.selecting = not options.set_of_support or not has_axioms
         self.has_axioms = has_axioms
-        self.uses_equality = axioms.uses_equality or _mentions_equality(
+        self.uses_equality = axioms.uses_equality or mentions_equality(
             chain(extra, negated_goal)
         )
         self._names: tuple[str, ...] | None = None
