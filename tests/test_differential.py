@@ -37,7 +37,7 @@ from strips_framework.worldmodel.proving import (
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 
-DEFAULT_EXAMPLES = 300
+DEFAULT_EXAMPLES = 200
 EXAMPLES = int(os.environ.get("STRIPS_DIFFERENTIAL_EXAMPLES", DEFAULT_EXAMPLES))
 RESOLUTION = ResolutionProver()
 #: By z3's mode: one-shot solvers, or one incremental solver per task.
