@@ -8,7 +8,9 @@ from attrs.exceptions import FrozenInstanceError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
+from strips_resolution_prover.auto import plan
 
 M, N = Param("m"), Param("n")
 
@@ -26,7 +28,9 @@ def clauses(*literal_lists: list) -> list[Clause]:
 
 
 def prove(axioms: list[Clause], goal: list[Clause], **task: object):
-    return ResolutionProver().prove(ProofTask(axioms, goal, **task))
+    """The set-of-support calculus (most tests here are about it; the automatic mode,
+    the default, picks it for world models and has tests of its own)."""
+    return ResolutionProver(schedule=False).prove(ProofTask(axioms, goal, **task))
 
 
 def test_propositional_refutation() -> None:
@@ -189,15 +193,16 @@ def test_size_limits_discard_large_clauses_and_void_saturation() -> None:
     axioms = clauses([neg("N", ("s", 0)), pos("N", 0)])
     goal = clauses([neg("N", "z")])
     for prover in (
-        ResolutionProver(max_term_depth=2),
-        ResolutionProver(max_weight=8),
-        ResolutionProver(max_clause_literals=1),
+        ResolutionProver(max_term_depth=2, schedule=False),
+        ResolutionProver(max_weight=8, schedule=False),
+        ResolutionProver(max_clause_literals=1, schedule=False),
     ):
         result = prover.prove(ProofTask(axioms, goal, effort=100))
         assert result.status == GAVE_UP
         assert result.effort_used < 100
     wide = clauses([neg("N", 0), pos("M", 0), pos("K", 0)])
-    result = ResolutionProver(max_clause_literals=1).prove(ProofTask(wide, goal, effort=100))
+    prover = ResolutionProver(max_clause_literals=1, schedule=False)
+    result = prover.prove(ProofTask(wide, goal, effort=100))
     assert result.status == GAVE_UP
 
 
@@ -214,7 +219,7 @@ def test_without_set_of_support_axioms_resolve_with_each_other() -> None:
     axioms = clauses([pos("P", "a")], [neg("P", 0), pos("Q", ("f", 0))])
     goal = clauses([neg("Q", M)])
     assert not prove(axioms, goal).proved
-    result = ResolutionProver(set_of_support=False).prove(ProofTask(axioms, goal))
+    result = ResolutionProver(schedule=False, set_of_support=False).prove(ProofTask(axioms, goal))
     assert result.answers == (((M, ("f", "a")),),)
     assert [str(c) for c in result.proof] == [
         "P(a)",
@@ -236,3 +241,36 @@ def test_literal_selection_saturates_without_usable_clauses() -> None:
         [neg("P", 0), pos("P", ("f", 0))], [pos("P", "a")], [neg("P", ("f", ("f", "a")))]
     )
     assert prove([], refutable).proved
+
+
+def test_automatic_mode_picks_the_calculus_from_the_features() -> None:
+    fact, rule = pos("P", "a"), [neg("P", 0), pos("Q", 0)]
+    # Definite Horn, no equality, half of it ground facts: a world model, set of support.
+    assert plan(clauses([fact], rule)) == "set-of-support"
+    # A rule-only, non-Horn or equational axiom set: saturation first, then SOS.
+    assert plan(clauses(rule)) == "schedule"
+    assert plan(clauses([fact], [pos("Q", 0), pos("R", 0)])) == "schedule"
+    assert plan(clauses([fact], [pos("=", "a", "b")])) == "schedule"
+    assert plan([]) == "saturation"
+    # The schedule saturates first: N(x) -> N(s(x)) from N(z) saturates under literal
+    # selection (every clause resolves on its one negative literal), while the set of
+    # support alone runs out of effort on ~N(z), N(s(z)) ... backward.
+    axioms = clauses([neg("N", ("s", 0)), pos("N", 0)])
+    goal = clauses([neg("N", "z")])
+    assert ResolutionProver().prove(ProofTask(axioms, goal, effort=50)).status == SATURATED
+    assert prove(axioms, goal, effort=50).status == GAVE_UP
+    # A session on a world model runs the set of support on every attempt, on M0 indexed
+    # once; on other axioms each attempt is a task of its own for the automatic mode.
+    world = ResolutionProver().open(InitialModel(clauses([fact], rule)), unique_names=False)
+    assert (world.calculus.schedule, world.calculus.set_of_support) == (False, True)
+    # Horn but not a fact base: the session's attempt is the schedule's, as for the task.
+    other = ResolutionProver().open(InitialModel(axioms), unique_names=False)
+    assert other.prove(WorldModel(other.initial), goal, effort=50).status == SATURATED
+    # An equation in the goal makes it the schedule's (SOS paramodulation would grow
+    # f(f(...)) into Q(f(a)) for the whole effort; superposition saturates at once).
+    assert plan(clauses([fact], rule), clauses([pos("=", 0, "a")])) == "schedule"
+    grows = clauses([pos("Q", ("f", "a"))], [pos("R", "b", "a")], [pos("S")])
+    goal = clauses([neg("Q", 0), pos("=", "a", 0)])
+    result = ResolutionProver().prove(ProofTask(grows, goal, effort=2000))
+    assert result.status == SATURATED
+    assert result.effort_used < 50

@@ -13,14 +13,18 @@ import pytest
 
 from strips_framework.formats.tptp import parse_tptp, szs_status
 from strips_framework.logic.clauses import Clause
-from strips_framework.worldmodel.proving import GAVE_UP, PROVED
+from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED
 from strips_resolution_prover import ResolutionProver
 from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.kbo import greater
 from strips_resolution_prover.pclause import PClause, from_clause
 from strips_resolution_prover.subsumption import subsumes
 
-CONFIGS = {"sos": {}, "no-sos": {"set_of_support": False}}
+CONFIGS = {
+    "sos": {"schedule": False},
+    "no-sos": {"schedule": False, "set_of_support": False},
+    "auto": {},
+}
 configs = pytest.mark.parametrize("options", CONFIGS.values(), ids=list(CONFIGS))
 
 
@@ -116,18 +120,43 @@ def test_no_satisfiable_claim_with_equality_from_an_incomplete_calculus(options:
     """
     assert status(pets, **options) == "Theorem"
     assert status(pets, effort=3, **options) == GAVE_UP
-    assert status("fof(a, axiom, f(a) = a). fof(c, conjecture, p(a)).", effort=20, **options) == (
-        GAVE_UP
+    assert status("fof(a, axiom, f(a) = a). fof(c, conjecture, p(a)).", effort=20,
+                  schedule=False) == GAVE_UP  # fmt: skip
+
+
+def test_superposition_saturation_is_claimed_only_where_it_is_complete() -> None:
+    # Without a set of support the calculus is superposition: a saturated set with
+    # equality is satisfiable (f(a) = a and ~p(a) have a model)...
+    satisfiable = "fof(a, axiom, f(a) = a). fof(c, conjecture, p(a))."
+    assert status(satisfiable, effort=20) == "CounterSatisfiable"
+    assert status(satisfiable, effort=20, schedule=False, set_of_support=False) == (
+        "CounterSatisfiable"
     )
+    # ... but not under unique names (evaluated, not axioms of the search) ...
+    problem = parse_tptp(satisfiable)
+    assert ResolutionProver().prove(problem.task(20, unique_names=True)).status == GAVE_UP
+    # ... nor with parameters, which III.A binds only to some terms.
+    question = parse_tptp("fof(a, axiom, f(a) = a). fof(q, question, ?[X]: p(X)).")
+    assert ResolutionProver().prove(question.task(20)).status == GAVE_UP
+
+
+@configs
+def test_superposition_from_a_variable_side(options: dict) -> None:
+    # Everything equals a, so p(b) and ~p(c) clash: only x = a used from its variable
+    # side (x := b, x := c) shows it; without that rule saturation would claim a model.
+    text = "cnf(e, plain, X = a). cnf(p, plain, p(b)). cnf(n, plain, ~p(c))."
+    assert status(text, **options) == "Unsatisfiable"
+    assert status("cnf(e, plain, X = a | q(X)). cnf(p, plain, p(b)). cnf(n, plain, ~p(c)). "
+                  "cnf(r, plain, ~q(b)). cnf(s, plain, ~q(c)).", **options) == "Unsatisfiable"  # fmt: skip
 
 
 def test_set_of_support_with_inconsistent_axioms_claims_nothing() -> None:
     # The goal is never touched, but the axioms alone are contradictory, so it follows:
     # a set of support is complete only over satisfiable axioms.
     text = "cnf(a, axiom, p | q). cnf(b, axiom, ~p). cnf(c, axiom, ~q). fof(g, conjecture, r)."
-    assert status(text) == GAVE_UP
-    assert status(text, set_of_support=False) == "Theorem"
-    assert status(text, schedule=True) == "Theorem"  # the automatic mode saturates next
+    assert status(text, schedule=False) == GAVE_UP
+    assert status(text, schedule=False, set_of_support=False) == "Theorem"
+    assert status(text) == "Theorem"  # the automatic mode saturates first
     # Axioms that all have a positive literal are satisfiable: saturation is shown.
     assert status("cnf(a, axiom, p | ~q). cnf(b, axiom, q). fof(g, conjecture, r).") == (
         "CounterSatisfiable"
@@ -148,7 +177,11 @@ def test_unique_names_refute_distinct_constants() -> None:
     prover = ResolutionProver()
     problem = parse_tptp("fof(a, axiom, p(a)). fof(c, conjecture, ?[X]: (p(X) & X != b)).")
     assert prover.prove(problem.task(100, unique_names=True)).status == PROVED
-    assert prover.prove(problem.task(100)).status == GAVE_UP
+    # Without unique names a may be b: the negated goal has a model, which superposition
+    # (the automatic mode's choice: the goal has =) shows and the set of support may not
+    # claim.
+    assert prover.prove(problem.task(100)).status == SATURATED
+    assert ResolutionProver(schedule=False).prove(problem.task(100)).status == GAVE_UP
 
 
 @configs

@@ -1,46 +1,109 @@
-"""The automatic mode: set of support first, then full saturation, in one effort budget.
+"""The automatic mode: which calculus a problem gets, chosen from its features.
 
-Which of the two configurations suits a problem shows in the problem's features, but
-no cheap feature predicts it well: a set of support finds goal-directed proofs in large
-axiom sets at once (MSC002-1) and can show satisfiability only over axioms known to be
-satisfiable, while full saturation with literal selection finds proofs that need derived
-facts from the axioms (LCL077-1, PUZ031-1) and saturates satisfiable clause sets. So, as
-E's ``--auto-schedule`` does with its strategies, the automatic mode runs both, each on a
-share of the effort: the first that decides (a proof, or a saturation that shows
-satisfiability) answers. Where the axioms are all the clauses there is no set of support
-to try, and the whole budget goes to saturation.
+The two configurations fail on different problems. A set of support (SOS) keeps the
+search on the goal, which is what a large fact base needs: saturating a world model
+would derive the consequences of every fact. Without literal selection, though, it
+resolves every literal of every goal descendant, and on non-Horn axioms with Skolem
+functions a thousand given clauses take seconds (KRS005-1, PUZ031-1 on the TPTP dev
+set), and it can show satisfiability only over axioms known to be satisfiable and
+without equality. Full saturation with literal selection (superposition with equality,
+:mod:`.equality`) is complete, finds proofs that need derived facts (LCL077-1), answers
+whose parameter bindings must be derived before the paper's rules let a parameter take
+them (III.A: never a term with a variable), and saturates satisfiable sets.
 
-The share is :data:`SOS_SHARE` of the effort; the run is as deterministic as each of its
-parts, and ``effort_used`` is their sum.
+So, from the features of the task (:func:`plan`):
+
+- **no axioms** (every clause is support): saturation, there is nothing to keep apart;
+- **a world model** (Horn axioms, each with a positive literal, at least half of them
+  ground facts, and no equality in axioms or goal): the set of support on the whole
+  effort. SOS is complete there (:mod:`.completeness`), it is backward chaining over the
+  facts, and a session keeps M0 indexed for it (STRIPS asks thousands of such
+  questions). With equality SOS is neither complete nor cheap (paramodulation into the
+  axioms is unordered; ``~Q(x) | a = x`` over ``Q(f(a))`` grows ``f(f(...))`` for
+  thousands of given clauses, where superposition saturates in 15);
+- **otherwise**: saturation on :data:`SATURATION_SHARE` of the effort, then the set of
+  support on the rest, as E's ``--auto-schedule`` runs strategies in turn. The first
+  that decides answers; if neither does, the goal-directed run's uncompleted proof is the
+  difference.
+
+The run is as deterministic as each of its parts, and ``effort_used`` is their sum.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING, Literal
 
 from attrs import evolve
 
+from strips_framework.logic.clauses import Clause
+from strips_framework.logic.terms import EQUALITY
 from strips_framework.worldmodel.proving import GAVE_UP, ProofResult, ProofTask
 
 if TYPE_CHECKING:
     from strips_resolution_prover.prover import ResolutionProver
 
-#: The share of the effort the set-of-support run gets; saturation gets the rest.
-SOS_SHARE = 1 / 3
+#: The share of the effort saturation gets when it goes first; the set of support gets
+#: the rest.
+SATURATION_SHARE = 2 / 3
+
+Plan = Literal["saturation", "set-of-support", "schedule"]
 
 
-def prove_scheduled(prover: ResolutionProver, task: ProofTask) -> ProofResult:
-    """Set of support on a share of ``task.effort``, then full saturation on the rest."""
+def definite_facts(clauses: Sequence[Clause]) -> list[bool] | None:
+    """Per clause, whether it is a ground fact, if every clause is definite Horn without
+    equality (``None`` otherwise): the shape a world model has."""
+    flags: list[bool] = []
+    for clause in clauses:
+        positives = 0
+        for positive, atom in clause.literals:
+            if atom[0] == EQUALITY:
+                return None
+            positives += positive
+        if positives != 1:
+            return None
+        flags.append(len(clause.literals) == 1 and _is_ground(clause.literals[0][1]))
+    return flags
+
+
+def _is_ground(atom: tuple) -> bool:
+    return all(type(arg) is str or (type(arg) is tuple and _is_ground(arg)) for arg in atom[1:])
+
+
+def mentions_equality(clauses: Iterable[Clause]) -> bool:
+    return any(atom[0] == EQUALITY for clause in clauses for _, atom in clause.literals)
+
+
+def is_world_model(facts: int, clauses: int) -> bool:
+    """Whether definite Horn axioms with ``facts`` ground facts among ``clauses`` are a
+    world model: at least half of them facts."""
+    return 2 * facts >= clauses
+
+
+def plan(axioms: Sequence[Clause], negated_goal: Sequence[Clause] = ()) -> Plan:
+    """The calculus the automatic mode runs on a task (see the module docstring)."""
+    if not axioms:
+        return "saturation"
+    flags = definite_facts(axioms)
+    if flags is not None and is_world_model(sum(flags), len(flags)):
+        if not mentions_equality(negated_goal):
+            return "set-of-support"
+    return "schedule"
+
+
+def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResult:
+    """``task`` under the calculus :func:`plan` picks (see the module docstring)."""
     sos = evolve(prover, schedule=False, set_of_support=True)
     saturate = evolve(prover, schedule=False, set_of_support=False)
-    if not task.axioms or task.effort < 2:
+    chosen = plan(task.axioms, task.negated_goal)
+    if chosen == "set-of-support":
+        return sos.prove(task)
+    if chosen == "saturation" or task.effort < 2:
         return saturate.prove(task)
-    first = sos.prove(evolve(task, effort=max(1, int(task.effort * SOS_SHARE))))
+    first = saturate.prove(evolve(task, effort=max(1, int(task.effort * SATURATION_SHARE))))
     if first.status != GAVE_UP:
         return first
-    second = saturate.prove(evolve(task, effort=task.effort - first.effort_used))
-    used = first.effort_used + second.effort_used
-    if second.status != GAVE_UP:
-        return evolve(second, effort_used=used)
-    # Neither decided: the goal-directed run's uncompleted proof is the difference.
-    return evolve(first, effort_used=used)
+    second = sos.prove(evolve(task, effort=task.effort - first.effort_used))
+    # Decided or not, the goal-directed run's result stands; its uncompleted proof is
+    # the difference.
+    return evolve(second, effort_used=first.effort_used + second.effort_used)

@@ -10,11 +10,16 @@ The reasons, each a way such a claim has been or could be wrong:
 
 - **discarded clauses** (``max_weight``, ``max_clause_literals``, ``max_term_depth``): a
   refutation may have needed one of them;
-- **equality** with the classic calculus: paramodulation that skips variables and is only
-  weight-ordered, without equality factoring, and under a set of support, is not complete
-  (a FOF puzzle with ``<=>`` and ``=`` was reported CounterSatisfiable that way); a
-  superposition calculus (ordered, with equality factoring) would be, and is not built
-  yet, so equality problems are decided only by a refutation;
+- **equality under a set of support**: there paramodulation skips variable sides and
+  equality factoring, and axioms are never paramodulated into each other, which is not
+  complete (a FOF puzzle with ``<=>`` and ``=`` was reported CounterSatisfiable that
+  way). Without a set of support the calculus is superposition (:mod:`.equality`), which
+  is complete, so such a saturation is claimed, except
+- **equality under unique names**: the unique-names axioms ``c != d`` are not clauses of
+  the search but evaluation and instantiation (:mod:`.equality`), so no completeness
+  theorem covers the combination, and
+- **equality with parameters**: a parameter is a constant that a proof may bind, only to
+  what III.A allows; superposition's completeness says nothing about such bindings;
 - **a set of support with axioms not known to be satisfiable**: the set-of-support
   strategy is complete only when the clauses outside it are satisfiable (Wos et al.,
   1965). We know that cheaply when every axiom has a positive literal (true in the
@@ -32,7 +37,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.terms import EQUALITY
+from strips_framework.logic.terms import EQUALITY, Param, Term
 
 
 def incompleteness(
@@ -40,18 +45,32 @@ def incompleteness(
     *,
     set_of_support: bool,
     uses_equality: bool,
+    unique_names: bool = False,
+    goal: Sequence[Clause] = (),
 ) -> str | None:
     """Why saturation of this task would not show satisfiability, or ``None`` if it would.
 
-    ``set_of_support``: the axioms were kept out of the set of support (never resolved
-    with each other); ``uses_equality``: some clause has ``=``. Discarded clauses are
-    the caller's to check, since they are known only after the search.
+    ``set_of_support``: there were axioms and they were kept out of the set of support
+    (never resolved with each other); ``uses_equality``: some clause has ``=``; ``goal``:
+    the negated goal, looked at for parameters. Discarded clauses are the caller's to check, since they are
+    known only after the search.
     """
     if uses_equality:
-        return "equality without a complete calculus for it"
+        if set_of_support:
+            return "equality under a set of support"
+        if unique_names:
+            return "equality under unique names"
+        if any(_has_parameter(atom) for c in goal for _, atom in c.literals):
+            return "equality with parameters"
     if set_of_support and axioms and not _trivially_satisfiable(axioms):
         return "a set of support, with axioms not known to be satisfiable"
     return None
+
+
+def _has_parameter(term: Term) -> bool:
+    if type(term) is tuple:
+        return any(_has_parameter(arg) for arg in term[1:])
+    return type(term) is Param
 
 
 def _trivially_satisfiable(clauses: Sequence[Clause]) -> bool:

@@ -18,12 +18,12 @@ the constants of each attempt: those modes have no session speed-up.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from collections.abc import Set as AbstractSet
 from itertools import chain
 from typing import ClassVar
 
-from attrs import define, field
+from attrs import define, evolve, field
 from attrs.validators import ge, in_, instance_of, optional
 
 from strips_framework.capabilities import (
@@ -44,10 +44,16 @@ from strips_framework.worldmodel.proving import (
     ProofTask,
 )
 from strips_framework.worldmodel.world import InitialModel, WorldModel
-from strips_resolution_prover.auto import prove_scheduled
+from strips_resolution_prover.auto import (
+    definite_facts,
+    is_world_model,
+    mentions_equality,
+    prove_automatically,
+)
 from strips_resolution_prover.completeness import incompleteness
 from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.equality import (
+    equality_factors,
     equality_resolvents,
     evaluate,
     is_equality,
@@ -75,7 +81,6 @@ from strips_resolution_prover.pclause import (
 from strips_resolution_prover.selection import ClauseQueue
 from strips_resolution_prover.subsumption import SubsumptionIndex
 
-
 #: The values of ``goal_selection`` (see :class:`ResolutionProver`).
 GOAL_SELECTIONS = ("every", "fewest", "fewest-shared")
 
@@ -90,13 +95,15 @@ class ResolutionProver:
     which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
     limit). A limit that discarded a clause turns saturation into GaveUp, since the search
-    was then incomplete. ``schedule`` (the automatic mode, :mod:`.auto`) runs a set of
-    support on a third of the effort, then full saturation on the rest; it overrides
-    ``set_of_support``. ``goal_selection`` is which literals of a goal clause are
-    resolved upon: ``"every"`` (each), or, in an attempt over Horn axioms without
-    equality whose negated goal is all negative, ``"fewest"`` or ``"fewest-shared"``
-    (:func:`~.inference.fewest_partners`): SLD resolution, as complete, and it does not
-    enumerate every subset of a conjunctive goal; other attempts resolve on every literal.
+    was then incomplete. ``schedule`` (the default) is the automatic mode (:mod:`.auto`):
+    it picks the set of support, saturation, or saturation then the set of support from
+    the task's features, overriding ``set_of_support``; ``schedule = false`` runs the one
+    calculus ``set_of_support`` names. ``goal_selection`` is which literals of a goal
+    clause are resolved upon: ``"every"`` (each), or, in an attempt over Horn axioms
+    without equality whose negated goal is all negative, ``"fewest"`` or
+    ``"fewest-shared"`` (:func:`~.inference.fewest_partners`): SLD resolution, as
+    complete, and it does not enumerate every subset of a conjunctive goal; other
+    attempts resolve on every literal.
     """
 
     name: ClassVar[str] = "resolution"
@@ -114,13 +121,13 @@ class ResolutionProver:
         default=None, validator=optional([instance_of(int), ge(1)])
     )
     max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
-    schedule: bool = field(default=False, validator=instance_of(bool))
+    schedule: bool = field(default=True, validator=instance_of(bool))
     goal_selection: str = field(default="every", validator=in_(GOAL_SELECTIONS))
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
         if self.schedule:
-            return prove_scheduled(self, task)
+            return prove_automatically(self, task)
         initial = InitialModel(task.axioms)
         return ResolutionSession(self, initial, task.unique_names).prove(
             WorldModel(initial), task.negated_goal, task.effort, task.max_answers
@@ -129,10 +136,6 @@ class ResolutionProver:
     def open(self, initial: InitialModel, unique_names: bool) -> ResolutionSession:
         """A session on M0, which is imported and indexed here, once."""
         return ResolutionSession(self, initial, unique_names)
-
-
-def _mentions_equality(clauses: Iterable[Clause]) -> bool:
-    return any(is_equality(atom) for clause in clauses for _, atom in clause.literals)
 
 
 def _positives(clause: Clause) -> int:
@@ -225,10 +228,13 @@ class _Axioms(_Retained):
         self.by_origin: dict[int, list[int]] = {}
         self.refutations: list[PClause] = []
         self.limits = Limits(options.max_weight)
-        self.uses_equality = _mentions_equality(initial.clauses)
+        self.uses_equality = mentions_equality(initial.clauses)
         #: Whether each attempt takes all its axioms afresh (see the module docstring).
-        # (Equations in M0 would rewrite clauses whether or not the model hides them.)
-        self.fresh = fresh or not options.set_of_support or self.uses_equality
+        # (Equations in M0 would rewrite clauses whether or not the model hides them; the
+        # automatic mode, when a session keeps it, runs each attempt as a task.)
+        self.fresh = (
+            fresh or options.schedule or not options.set_of_support or self.uses_equality
+        )
         #: Saturation shows satisfiability only over axioms known to be satisfiable
         #: (:mod:`.completeness`); M0's verdict is made once, for all its models. Every
         #: clause has a positive literal in ``all_positive`` M0s, and additions keep that.
@@ -273,9 +279,30 @@ class ResolutionSession:
         self.options = options
         self.initial = initial
         self.unique_names = unique_names
-        self.axioms = _Axioms(options, initial, unique_names)
+        #: In the automatic mode, which M0 clauses are facts if M0 has a world model's
+        #: shape: an attempt on a model that is still a world model (:func:`.auto.plan`,
+        #: decided from counts, not by walking the model) runs the set of support here.
+        self.facts = definite_facts(initial.clauses) if options.schedule else None
+        self.fact_count = sum(self.facts) if self.facts is not None else 0
+        self.calculus = options
+        if self.facts is not None:
+            self.calculus = evolve(options, schedule=False, set_of_support=True)
+        self.axioms = _Axioms(self.calculus, initial, unique_names)
         #: No axioms of its own: the base of an attempt that takes its axioms afresh.
-        self.none = _Axioms(options, InitialModel(()), unique_names, fresh=True)
+        self.none = _Axioms(self.calculus, InitialModel(()), unique_names, fresh=True)
+
+    def _is_world_model(
+        self, hidden: AbstractSet[int], added: Sequence[Clause], negated_goal: Sequence[Clause]
+    ) -> bool:
+        """:func:`.auto.plan`'s test on the model's visible clauses, from M0's counts."""
+        if self.facts is None or mentions_equality(negated_goal):
+            return False
+        added_facts = definite_facts(added)
+        if added_facts is None:
+            return False
+        visible = len(self.facts) - len(hidden) + len(added)
+        facts = self.fact_count - sum(self.facts[i] for i in hidden) + sum(added_facts)
+        return visible > 0 and is_world_model(facts, visible)
 
     def prove(
         self,
@@ -286,16 +313,17 @@ class ResolutionSession:
     ) -> ProofResult:
         """Refute the clauses visible in ``model`` ∪ ``negated_goal`` within ``effort``
         given clauses."""
-        if self.options.schedule:  # two calculi in turn: each attempt is a task of its own
+        added = model.added_clauses()
+        hidden_m0 = model.hidden()
+        if self.options.schedule and not self._is_world_model(hidden_m0, added, negated_goal):
+            # The automatic mode's schedule: each attempt is a task of its own.
             task = ProofTask(model.clauses(), negated_goal, effort, max_answers, self.unique_names)
-            return prove_scheduled(self.options, task)
+            return prove_automatically(self.options, task)
         # Unique names instantiate equations over the constants the visible clauses
         # name, which a model's deletions change: such an attempt takes M0 afresh.
-        added = model.added_clauses()
         fresh = self.axioms.fresh or (
-            self.unique_names and _mentions_equality(chain(negated_goal, added))
+            self.unique_names and mentions_equality(chain(negated_goal, added))
         )
-        hidden_m0 = model.hidden()
         axioms = self.axioms
         if not fresh:
             hidden = {cid for index in hidden_m0 for cid in axioms.by_origin.get(index, ())}
@@ -303,7 +331,7 @@ class ResolutionSession:
         else:
             axioms, hidden, extra = self.none, set(), tuple(model.clauses())
         attempt = _Saturation(
-            self.options,
+            self.calculus,
             axioms,
             hidden,
             extra,
@@ -353,7 +381,7 @@ class _Saturation:
         # incomplete with a set of support, whose usable clauses never meet each other.
         self.selecting = not options.set_of_support or not has_axioms
         self.has_axioms = has_axioms
-        self.uses_equality = axioms.uses_equality or _mentions_equality(
+        self.uses_equality = axioms.uses_equality or mentions_equality(
             chain(extra, negated_goal)
         )
         # SLD resolution: Horn axioms (the additions are positive units) and goal clauses
@@ -427,6 +455,9 @@ class _Saturation:
     def _equality_inferences(self, given: PClause, renamed: tuple[Literal, ...]) -> None:
         for clause in equality_resolvents(given, self.limits):
             self._add_new(clause)
+        if self.selecting:  # saturation: the superposition calculus (see .equality)
+            for clause in equality_factors(given, self.limits):
+                self._add_new(clause)
         for clause in unique_name_instances(given, self._names_known, self.limits):
             self._add_new(clause)
         has_equation = any(pos and is_equality(atom) for pos, atom in given.literals)
@@ -436,7 +467,9 @@ class _Saturation:
             else (self.axioms.equational, self.own.equational)
         )
         partners = [c for c in chain(*lists) if c.id not in self.hidden]
-        for clause in paramodulants(given, renamed, partners, self.limits):
+        for clause in paramodulants(
+            given, renamed, partners, self.limits, saturating=self.selecting
+        ):
             self._add_new(clause)
             if self._done():
                 return
@@ -569,13 +602,17 @@ class _Saturation:
         """Whether saturation here shows satisfiability (see :mod:`.completeness`). Over a
         session's M0 the verdict on M0 was made once; hidden clauses are not taken out
         of it, which can only turn a Satisfiable into GaveUp."""
-        set_of_support = self.options.set_of_support
+        set_of_support = self.options.set_of_support and self.has_axioms
         if self.axioms.fresh or self.uses_equality:
             reason = incompleteness(
-                self.extra, set_of_support=set_of_support, uses_equality=self.uses_equality
+                self.extra,
+                set_of_support=set_of_support,
+                uses_equality=self.uses_equality,
+                unique_names=self.unique_names,
+                goal=self.negated_goal,
             )
             return reason is None
-        if not set_of_support or not self.has_axioms:
+        if not set_of_support:
             return True
         # The additions are positive units: an M0 whose clauses all have a positive
         # literal stays satisfiable with them, any other only without them.
