@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 from strips_eprover_prover import EProver
+from strips_eprover_prover.encoding import parse_answers, to_tptp
 from strips_eprover_prover.residue import residue
 from strips_framework.errors import PluginError
 from strips_framework.logic.clauses import Clause
@@ -43,6 +44,16 @@ def test_no_answer_with_a_skolem_term() -> None:
     # exists x: P(x) in the model gives P(sk!1): true, but sk!1 is no binding (III.A).
     result = EProver().prove(ProofTask([unit(True, "P", "sk!1")], [unit(False, "P", M)]))
     assert result.status == GAVE_UP and result.answers == ()
+
+
+def test_a_disjunctive_answer_binds_nothing() -> None:
+    # E's answer when the goal holds for one of several tuples, not known which (from a
+    # case of benchmarks/differential.py, where it raised): no binding (III.A).
+    task = ProofTask([unit(True, "P", "a")], [unit(False, "P", M)], max_answers=3)
+    _, table = to_tptp(task)
+    disjunctive = "# SZS answers Tuple [([esk1_1(f5)]|[f1]|[X1]|[$answer(X1)])|_] for goal"
+    definite = f"# SZS answers Tuple [[{table.symbol('f', 'a')}]|_] for goal"
+    assert parse_answers([disjunctive, definite], table) == [((M, "a"),)]
 
 
 @needs_e

@@ -175,13 +175,18 @@ def _parse_term(tokens: list[str], pos: int, table: SymbolTable) -> tuple[Term |
 def parse_answers(lines: Iterable[str], table: SymbolTable) -> list[Answer]:
     """The bindings of E's ``# SZS answers Tuple [[t1, t2]|_]`` lines, in E's order;
     tuples with E's own Skolem symbols or variables inside terms are left out (a parameter
-    is never bound to those, paper III.A), a variable alone leaves its parameter open."""
+    is never bound to those, paper III.A), a variable alone leaves its parameter open. A
+    disjunctive answer, ``[([a]|[b])|_]`` (the goal holds for one of the tuples, which one
+    is not known), binds nothing either: the paper's answers are definite."""
     params = list(table.params)
     answers: list[Answer] = []
     for line in lines:
         if not line.startswith("# SZS answers Tuple"):
             continue
-        tokens = _tokens(line.removeprefix("# SZS answers Tuple").split(" for ")[0])
+        text = line.removeprefix("# SZS answers Tuple").split(" for ")[0]
+        if text.lstrip().startswith("[("):
+            continue
+        tokens = _tokens(text)
         try:
             values = _tuple(tokens, table)
         except _UnknownSymbol:
