@@ -34,7 +34,8 @@
     seed = 0
 
 Every table is optional; missing ones take the defaults in :data:`DEFAULT_CHOICES`.
-Mistakes are reported with their key path and what was expected.
+Mistakes are reported at the line the key is written on (when the file writes it), with
+their key path and what was expected.
 """
 
 from __future__ import annotations
