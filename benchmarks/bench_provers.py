@@ -71,7 +71,7 @@ class Recording:
     def tasks(self) -> list[ProofTask]:
         """The attempts as one-off proof tasks over each model's visible clauses."""
         return [
-            ProofTask(tuple(model.clauses()), goal, EFFORT, answers, self.unique_names)
+            ProofTask.of_model(model, goal, EFFORT, answers, self.unique_names)
             for model, goal, answers in self.attempts
         ]
 

@@ -100,8 +100,8 @@ def case(
     expected = frozenset(tuple((p, binding[p.name]) for p in ordered) for binding in answers)
     if provable and not expected:
         expected = frozenset({()})
-    task = ProofTask(
-        tuple(model.clauses()),
+    task = ProofTask.of_model(
+        model,
         negated_goal_clauses(formula, skolem),
         effort=EFFORT,
         max_answers=max_answers,

@@ -136,7 +136,7 @@ def check_session_agrees_with_fresh_tasks(
     for step in range(steps):
         for number in rng.sample(range(len(goals)), 3):
             goal, answers = goals[number], rng.randint(1, 3)
-            task = ProofTask(tuple(model.clauses()), goal, EFFORT, answers, True)
+            task = ProofTask.of_model(model, goal, EFFORT, answers, True)
             try:
                 fresh = prover.prove(task)
             except (ValueError, NotImplementedError):

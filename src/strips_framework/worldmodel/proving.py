@@ -96,6 +96,19 @@ class ProofTask:
     max_answers: int = field(default=1, validator=[validators.instance_of(int), validators.ge(1)])
     unique_names: bool = field(default=False, validator=validators.instance_of(bool))
 
+    @classmethod
+    def of_model(
+        cls,
+        model: WorldModel,
+        negated_goal: Sequence[Clause],
+        effort: int,
+        max_answers: int = 1,
+        unique_names: bool = False,
+    ) -> ProofTask:
+        """The fresh task that a session's ``prove(model, ...)`` must answer like: the
+        clauses visible in ``model`` are its axioms."""
+        return cls(tuple(model.clauses()), negated_goal, effort, max_answers, unique_names)
+
 
 #: SZS statuses a prover reports (https://tptp.org/TPTP/TPTP/SZSOntology): ``Unsatisfiable``
 #: when the clauses were refuted, ``Satisfiable`` when the set of support saturated without
@@ -128,7 +141,7 @@ class ProverSession(Protocol):
     """A prover opened on one M0, asked about the world models built on it.
 
     ``prove(model, negated_goal, effort, max_answers)`` answers exactly what
-    ``prover.prove(ProofTask(tuple(model.clauses()), negated_goal, effort, max_answers,
+    ``prover.prove(ProofTask.of_model(model, negated_goal, effort, max_answers,
     unique_names))`` would (the conformance kit checks this over long random sequences of
     models); only its cost may differ. ``model.initial`` is always the M0 the session was
     opened on.
@@ -186,11 +199,5 @@ class TaskSession:
         effort: int,
         max_answers: int = 1,
     ) -> ProofResult:
-        task = ProofTask(
-            axioms=tuple(model.clauses()),
-            negated_goal=tuple(negated_goal),
-            effort=effort,
-            max_answers=max_answers,
-            unique_names=self.unique_names,
-        )
+        task = ProofTask.of_model(model, negated_goal, effort, max_answers, self.unique_names)
         return self.prover.prove(task)

@@ -96,9 +96,7 @@ class Z3Session:
         max_answers: int = 1,
     ) -> ProofResult:
         """Refute the clauses visible in ``model`` ∪ ``negated_goal``."""
-        task = ProofTask(
-            tuple(model.clauses()), tuple(negated_goal), effort, max_answers, self.unique_names
-        )
+        task = ProofTask.of_model(model, negated_goal, effort, max_answers, self.unique_names)
         options = self.options
         budget = Budget(task.effort, options.rlimit_per_effort)
         params = sorted(set().union(*map(clause_params, task.negated_goal)))
