@@ -5,6 +5,7 @@ import pytest
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import ProofTask
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 GOAL = [Clause([(False, ("P", Param("m")))])]
 
@@ -29,3 +30,12 @@ def test_malformed_tasks_are_refused(options, error, message):
 def test_well_formed_terms_are_accepted():
     axioms = [Clause([(True, ("P", "a", 0, Param("n"), ("f", "b", 1)))])]
     assert ProofTask(axioms, GOAL).effort == 1000
+
+
+def test_the_fresh_task_of_a_model_carries_its_m0s_rigid_predicates():
+    # A session sees them through model.initial; the fresh task it must answer like
+    # must be told them too.
+    initial = InitialModel([Clause([(True, ("P", "a"))])], rigid={("P", 1)})
+    task = ProofTask.of_model(WorldModel(initial), GOAL, effort=10)
+    assert task.rigid == {("P", 1)}
+    assert [str(c) for c in task.axioms] == ["P(a)"]

@@ -15,6 +15,9 @@ PUSH = OperatorSchema(
     [("AT", k, n), ("ATR", n)], [("AT", k, m), ("ATR", m)],
 )
 EMPTY = WorldModel(InitialModel([]))
+#: What :func:`~strips_framework.worldmodel.world.rigid_predicates` finds for a world
+#: whose operators never add PUSHABLE.
+RIGID = {("PUSHABLE", 1)}
 
 
 def _relevant(difference, operators, model):
@@ -67,7 +70,7 @@ def test_instances_needing_a_rigid_fact_that_does_not_hold_are_dropped():
         "pushto", [m, n], And([Atomic(("PUSHABLE", m)), Atomic(("NEXTTO", "ROBOT", m))]),
         [("NEXTTO", m, n)], [("NEXTTO", m, "$")],
     )
-    model = WorldModel(InitialModel([Clause([(True, ("PUSHABLE", "BOX1"))])]))
+    model = WorldModel(InitialModel([Clause([(True, ("PUSHABLE", "BOX1"))])], rigid=RIGID))
     difference = Difference([
         Clause([(False, ("NEXTTO", "BOX1", "a"))]), Clause([(False, ("NEXTTO", "ROBOT", "a"))]),
     ])
@@ -82,7 +85,7 @@ def test_a_rigid_fact_inside_a_nested_conjunction_counts_too():
         And([Atomic(("NEXTTO", "ROBOT", m)), And([Atomic(("PUSHABLE", m))])]),
         [("NEXTTO", m, n)], [("NEXTTO", m, "$")],
     )
-    model = WorldModel(InitialModel([Clause([(True, ("PUSHABLE", "BOX1"))])]))
+    model = WorldModel(InitialModel([Clause([(True, ("PUSHABLE", "BOX1"))])], rigid=RIGID))
     difference = Difference([
         Clause([(False, ("NEXTTO", "BOX1", "a"))]), Clause([(False, ("NEXTTO", "ROBOT", "a"))]),
     ])

@@ -1,11 +1,12 @@
 """World models as M0 plus ADDITIONS and DELETIONS (III.B, III.D)."""
 
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.formulas import Atomic
+from strips_framework.logic.cnf import SkolemNames
+from strips_framework.logic.formulas import Atomic, Forall, Implies, Var
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.operators import OperatorInstance
-from strips_framework.worldmodel.problem import OperatorSchema
-from strips_framework.worldmodel.world import InitialModel, WorldModel
+from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem
+from strips_framework.worldmodel.world import InitialModel, WorldModel, initial_model
 
 
 def unit(*atom):
@@ -51,3 +52,21 @@ def test_wildcard_delete_and_application():
     assert sorted(map(str, after.clauses())) == ["AT(BOX1, b)", "AT(BOX2, b)", "ATR(b)"]
     assert str(instance) == "push(BOX2, c, b)"
     assert instance.ipc() == "(push BOX2 c b)"
+
+
+def test_rigid_predicates_are_those_only_deletions_change():
+    # ATR is added by goto, CONNECTS concluded by a rule, NEXTTO a derived fact (it comes
+    # back with its supports) although NEXTTO(B1, B2) is a plain fact: PUSHABLE, TYPE and
+    # AT (nothing adds it) are rigid.
+    m, n = Param("m"), Param("n")
+    x, y, z = Var("x"), Var("y"), Var("z")
+    goto = OperatorSchema("goto", [m, n], Atomic(("ATR", m)), [("ATR", n)], [("ATR", m)])
+    symmetric = Forall([x, y, z], Implies(Atomic(("CONNECTS", x, y, z)), Atomic(("CONNECTS", x, z, y))))
+    facts = [("ATR", "a"), ("PUSHABLE", "B1"), ("TYPE", "B1", "BOX"), ("CONNECTS", "D", "R1", "R2"),
+             ("AT", "B1", "a"), ("NEXTTO", "B1", "B2")]
+    problem = Problem(
+        "rigid", ["a", "B1", "B2", "BOX", "D", "R1", "R2"], {("ATR", 1), ("AT", 2)}, facts, [symmetric],
+        [DerivedFact(("NEXTTO", "B1", "a"), [("AT", "B1", "a")])], [goto], Atomic(("ATR", "b")),
+    )
+    rigid = initial_model(problem, SkolemNames()).rigid
+    assert rigid == {("PUSHABLE", 1), ("TYPE", 2), ("AT", 2)}

@@ -9,7 +9,9 @@ from strips_framework.logic.clauses import Clause
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Config
 from strips_framework.logic.terms import Param
+from strips_framework.testing.session_checks import check_session_agrees_with_fresh_tasks
 from strips_framework.worldmodel.proving import PROVED, SATURATED, ProofTask
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 
 F, X = Param("f"), Param("x")
@@ -90,6 +92,40 @@ def test_fewest_shared_also_binds_a_variable_from_the_other_literals_that_hold_i
     shared = {str(c) for c in SHARED.prove(task).uncompleted}
     assert "~boarded(p, slow1)  [lift=slow1]" in fewest & shared
     assert "~lift-at(slow0, n4) | ~boarded(p, slow0)  [lift=slow0]" in shared - fewest
+
+
+def test_variables_are_bound_through_rigid_literals_first() -> None:
+    # The same leave(p, lift, n4), told that no operator changes elevator: its partners
+    # are every lift, so each lift is offered, not only the one now at n4.
+    lift = Param("lift")
+    axioms = [fact("lift-at", "slow1", "n4"), fact("elevator", "slow0"), fact("elevator", "slow1")]
+    wanted = goal(("elevator", lift), ("lift-at", lift, "n4"), ("boarded", "p", lift))
+    rigid = {("elevator", 1)}
+    by_task = SLD.prove(ProofTask(axioms, wanted, rigid=rigid))
+    # A session learns them from its M0.
+    initial = InitialModel(axioms, rigid=rigid)
+    by_session = SLD.open(initial, unique_names=False).prove(WorldModel(initial), wanted, 1000)
+    for result in (by_task, by_session):
+        left = {str(c) for c in result.uncompleted}
+        assert "~boarded(p, slow1)  [lift=slow1]" in left
+        assert "~lift-at(slow0, n4) | ~boarded(p, slow0)  [lift=slow0]" in left
+
+
+def test_a_goal_clause_resting_on_a_false_rigid_atom_is_no_difference() -> None:
+    # No lift reaches n9, and no operator can change that: nothing is left to achieve.
+    lift = Param("lift")
+    axioms = [fact("reaches", "slow0", "n1"), fact("lift-at", "slow0", "n1")]
+    wanted = goal(("boarded", "p", lift), ("reaches", lift, "n9"))
+    result = SLD.prove(ProofTask(axioms, wanted, rigid={("reaches", 2)}))
+    assert result.status == SATURATED
+    assert result.uncompleted == ()
+    # Were reaches an operator's to change, the clause would be the difference.
+    assert SLD.prove(ProofTask(axioms, wanted)).uncompleted
+
+
+def test_a_session_on_a_model_with_rigid_predicates_answers_as_fresh_tasks() -> None:
+    for seed in range(3):
+        check_session_agrees_with_fresh_tasks(SLD, SLD.capabilities, seed)
 
 
 def test_a_value_outside_the_choices_is_a_config_error_naming_them() -> None:

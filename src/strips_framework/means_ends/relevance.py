@@ -56,8 +56,8 @@ class AddListRelevance:
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel
     ) -> AddListIndex:
-        """The add-list index and rigid predicates of one problem, built once."""
-        return AddListIndex(_add_atoms_by_predicate(operators), _rigid_predicates(operators, initial))
+        """The add-list index of one problem, built once, and M0's rigid predicates."""
+        return AddListIndex(_add_atoms_by_predicate(operators), initial.rigid)
 
 
 @frozen
@@ -132,22 +132,6 @@ def _resolve(
     ]
     resolvent = Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
     return RelevantInstance(OperatorInstance(schema, binding.items()), resolvent)
-
-
-def _rigid_predicates(
-    operators: Sequence[OperatorSchema], initial: InitialModel
-) -> frozenset[tuple[str, int]]:
-    """Predicates of M0's facts that no operator adds and no non-unit clause concludes."""
-    concluded = {
-        (atom[0], len(atom) - 1)
-        for clause in initial.clauses
-        if not clause.is_unit
-        for positive, atom in clause.literals
-        if positive
-    }
-    added = {(atom[0], len(atom) - 1) for schema in operators for atom in schema.add_list}
-    facts = {(atom[0], len(atom) - 1) for atom in initial.facts}
-    return frozenset(facts - added - concluded)
 
 
 def _never_applicable(

@@ -46,7 +46,8 @@ def _neg(*atoms: tuple) -> tuple[Clause, ...]:
 
 def sessions_m0(quantified: bool) -> InitialModel:
     """A small robot world: facts, derived facts with their supports and (if the prover
-    reasons with them) rules."""
+    reasons with them) rules. Without rules CONNECTS is rigid (the random steps never add
+    it), which a prover may use to order its search, as a fresh task's ``rigid`` lets it."""
     facts: list[Atom] = [
         ("AT", "ROBOT", "a"), ("AT", "BOX1", "a"), ("AT", "BOX2", "b"), ("AT", "BOX3", "c"),
         ("INROOM", "ROBOT", "R1"), ("INROOM", "BOX1", "R1"), ("INROOM", "BOX2", "R1"),
@@ -64,7 +65,7 @@ def sessions_m0(quantified: bool) -> InitialModel:
     for atom, rests_on in _DERIVED.items():
         supports[len(clauses)] = frozenset(facts.index(fact) for fact in rests_on)
         clauses.append(Clause([(True, atom)], label="derived"))
-    return InitialModel(clauses, supports)
+    return InitialModel(clauses, supports, rigid=() if quantified else {("CONNECTS", 3)})
 
 
 def _goals(quantified: bool) -> list[tuple[Clause, ...]]:
@@ -76,6 +77,7 @@ def _goals(quantified: bool) -> list[tuple[Clause, ...]]:
         _neg(("NEAR", "ROBOT", "BOX1")),
         _neg(("SAMEROOM", "BOX1", M)),
         _neg(("NEXTTO", M, "BOX2")),
+        _neg(("CONNECTS", M, N, "R2"), ("INROOM", "ROBOT", N)),
         (Clause([(False, ("AT", "BOX1", "a"))]), Clause([(False, ("AT", "BOX1", "b"))])),
     ]
     if quantified:

@@ -85,6 +85,11 @@ class ProofTask:
     on after the first refutation and collect distinct parameter bindings. With
     ``unique_names`` distinct constants denote distinct objects, so ``a = b`` is false for
     constants ``a`` and ``b`` (the paper's "predicate evaluation" of equality).
+    ``rigid`` names predicates, as ``(name, arity)``, whose atoms no operator can make true
+    (:attr:`~strips_framework.worldmodel.world.InitialModel.rigid`): the asker's hint on
+    which goal literals are not worth leaving in an uncompleted proof. A prover may use it
+    to order its search (the resolution prover binds variables through them first); it
+    never changes whether a goal is provable.
 
     A malformed task is refused here (``TypeError``/``ValueError`` naming the clause and
     what was expected), so no prover ever sees one.
@@ -95,6 +100,7 @@ class ProofTask:
     effort: int = field(default=1000, validator=[validators.instance_of(int), validators.ge(1)])
     max_answers: int = field(default=1, validator=[validators.instance_of(int), validators.ge(1)])
     unique_names: bool = field(default=False, validator=validators.instance_of(bool))
+    rigid: frozenset[tuple[str, int]] = field(default=frozenset(), converter=frozenset)
 
     @classmethod
     def of_model(
@@ -106,8 +112,11 @@ class ProofTask:
         unique_names: bool = False,
     ) -> ProofTask:
         """The fresh task that a session's ``prove(model, ...)`` must answer like: the
-        clauses visible in ``model`` are its axioms."""
-        return cls(tuple(model.clauses()), negated_goal, effort, max_answers, unique_names)
+        clauses visible in ``model`` are its axioms, its M0's rigid predicates its hint."""
+        return cls(
+            tuple(model.clauses()), negated_goal, effort, max_answers, unique_names,
+            model.initial.rigid,
+        )
 
 
 #: SZS statuses a prover reports (https://tptp.org/TPTP/TPTP/SZSOntology): ``Unsatisfiable``

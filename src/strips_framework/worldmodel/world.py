@@ -8,7 +8,7 @@ of M0 is visible only while every primitive clause it rests on is still present.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from attrs import field, frozen
 
@@ -26,6 +26,11 @@ _FactKey = tuple[str, int] | tuple[str, int, int, object]
 class InitialModel:
     """M0: its clauses, and for each derived clause the indices of its supports.
 
+    ``rigid`` names the predicates, as ``(name, arity)``, that no operator adds and no
+    rule of M0 concludes: a model's facts of them are M0's less its deletions, so a
+    rigid atom that is not a fact never becomes true, and literals of them are not
+    what operators can change (a prover may bind variables through them first; see
+    :func:`rigid_predicates`). Empty when nothing is known about operators.
     ``facts`` maps each ground unit fact of M0 to its index in ``clauses``, so operators
     can find what to delete without scanning; ``dependents`` maps a clause index to the
     derived clauses resting on it, so a model's hidden clauses are found from its
@@ -35,6 +40,7 @@ class InitialModel:
 
     clauses: tuple[Clause, ...] = field(converter=tuple)
     supports: dict[int, frozenset[int]] = field(factory=dict)
+    rigid: frozenset[tuple[str, int]] = field(default=frozenset(), converter=frozenset)
     facts: dict[Atom, int] = field(init=False)
     dependents: dict[int, tuple[int, ...]] = field(init=False)
     _filed: dict[_FactKey, list[Atom]] = field(init=False, repr=False)
@@ -163,4 +169,21 @@ def initial_model(problem: Problem, skolem: SkolemNames) -> InitialModel:
     for fact in problem.derived:
         supports[len(clauses)] = frozenset(index[atom] for atom in fact.supports)
         clauses.append(Clause(((True, fact.atom),), label="derived"))
-    return InitialModel(clauses, supports)
+    return InitialModel(clauses, supports, rigid_predicates(problem, clauses))
+
+
+def rigid_predicates(problem: Problem, clauses: Iterable[Clause]) -> frozenset[tuple[str, int]]:
+    """The predicates of ``problem``'s facts that no operator adds, no derived fact has
+    (a derived fact comes back when its supports do) and no non-unit clause of M0's
+    ``clauses`` concludes: only deletions change them."""
+    concluded = {
+        (atom[0], len(atom) - 1)
+        for clause in clauses
+        if not clause.is_unit
+        for positive, atom in clause.literals
+        if positive
+    }
+    changing = {(atom[0], len(atom) - 1) for schema in problem.operators for atom in schema.add_list}
+    changing.update((fact.atom[0], len(fact.atom) - 1) for fact in problem.derived)
+    facts = {(atom[0], len(atom) - 1) for atom in problem.facts}
+    return frozenset(facts - changing - concluded)

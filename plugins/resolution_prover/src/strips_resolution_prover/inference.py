@@ -11,6 +11,7 @@ descendants" (paper, III.A).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Param, Term, is_ground, params_of, variables_of
@@ -191,41 +192,56 @@ def resolvents(
                 yield clause
 
 
+def has_partner(given: PClause, renamed: tuple[Literal, ...], i: int, partners: Partners) -> bool:
+    """Whether literal ``i`` of the given clause (renamed apart) resolves with anything."""
+    return next(_unifiers(given, renamed, i, partners), None) is not None
+
+
 def fewest_partners(
-    given: PClause, renamed: tuple[Literal, ...], partners: Partners, shared: bool
+    given: PClause,
+    renamed: tuple[Literal, ...],
+    partners: Partners,
+    shared: bool,
+    rigid: AbstractSet[tuple[str, int]] = frozenset(),
 ) -> tuple[int, ...]:
     """The literals a goal clause over Horn axioms resolves on: a ground one with a
-    partner if there is one (the first), else every literal with the fewest partners,
-    counting only literals that have any, and with ``shared`` also every literal with a
+    partner if there is one (the first), else the literals tied at the fewest partners,
+    among the literals of ``rigid`` predicates (as ``(name, arity)``) with any if there
+    are such, else among the others with any; with ``shared`` also every literal with a
     partner that shares a variable with the first of them; none when no literal has a
     partner.
 
     Any nonempty choice keeps SLD resolution complete, so the choice only shapes the
     search. Resolving a ground literal binds nothing, so the order in which ground
     literals go changes no answer and no difference: one at a time leaves one clause
-    where resolving each would make every subset of them. Among literals with variables,
-    the fewest partners go first ("first fail"), so a variable is bound where it has the
-    fewest values. Which literal binds a variable decides what a failed proof leaves as
-    differences: ``board(p, e, f)`` leaves ``~lift-at(e, f)`` under the passenger's floor,
-    or ``~passenger-at(p, f)`` under the lift's. Literals tied at the fewest partners all
-    resolve; ``shared`` lets every literal that could bind the same variable do so too
-    (``leave(p, lift, f)``: the lift from ``type:elevator(lift)`` as well as from
-    ``lift-at(lift, f)``), which keeps more alternatives at the price of more clauses. A
-    literal nothing resolves is left for the difference.
+    where resolving each would make every subset of them. Which literal binds a variable
+    decides what a failed proof leaves as differences: ``leave(p, lift, f)`` bound
+    through ``lift-at(lift, f)`` offers only the lifts now at ``f``, and a plan that
+    needs another lift there never shows. The partners of a literal no operator can
+    change are every value its variables can ever take, so variables are bound through
+    rigid literals first, and what is left for the difference are the literals operators
+    can change (the paper's "heuristically select some part of P"). Among literals of
+    one kind the fewest partners go first ("first fail"). ``shared`` lets every literal
+    that could bind the same variable do so too, which keeps more alternatives at the
+    price of more clauses. A literal nothing resolves is left for the difference.
     """
-    counts: list[tuple[int, int]] = []
+    fluent: list[tuple[int, int]] = []
+    fixed: list[tuple[int, int]] = []
     for i, (_, atom) in enumerate(renamed):
         count = sum(1 for _ in _unifiers(given, renamed, i, partners))
         if count and is_ground(atom):
             return (i,)
         if count:
-            counts.append((count, i))
+            (fixed if (atom[0], len(atom) - 1) in rigid else fluent).append((count, i))
+    counts = fixed or fluent
     if not counts:
         return ()
     fewest, first = min(counts)
     unbound = _unbound(renamed[first][1]) if shared else set()
     return tuple(
-        i for count, i in counts if count == fewest or unbound & _unbound(renamed[i][1])
+        i
+        for count, i in sorted(fixed + fluent, key=lambda item: item[1])
+        if (count == fewest and (count, i) in counts) or unbound & _unbound(renamed[i][1])
     )
 
 

@@ -67,6 +67,7 @@ from strips_resolution_prover.inference import (
     eligible,
     factors,
     fewest_partners,
+    has_partner,
     resolvents,
 )
 from strips_resolution_prover.partners import PartnerIndex
@@ -128,7 +129,7 @@ class ResolutionProver:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
         if self.schedule:
             return prove_automatically(self, task)
-        initial = InitialModel(task.axioms)
+        initial = InitialModel(task.axioms, rigid=task.rigid)
         return ResolutionSession(self, initial, task.unique_names).prove(
             WorldModel(initial), task.negated_goal, task.effort, task.max_answers
         )
@@ -317,7 +318,7 @@ class ResolutionSession:
         hidden_m0 = model.hidden()
         if self.options.schedule and not self._is_world_model(hidden_m0, added, negated_goal):
             # The automatic mode's schedule: each attempt is a task of its own.
-            task = ProofTask(model.clauses(), negated_goal, effort, max_answers, self.unique_names)
+            task = ProofTask.of_model(model, negated_goal, effort, max_answers, self.unique_names)
             return prove_automatically(self.options, task)
         # Unique names instantiate equations over the constants the visible clauses
         # name, which a model's deletions change: such an attempt takes M0 afresh.
@@ -337,6 +338,7 @@ class ResolutionSession:
             extra,
             tuple(negated_goal),
             unique_names=self.unique_names,
+            rigid=self.initial.rigid,
             has_axioms=bool(extra) or len(hidden_m0) < len(self.initial.clauses),
         )
         return attempt.run(effort, max_answers)
@@ -361,6 +363,7 @@ class _Saturation:
         negated_goal: tuple[Clause, ...],
         *,
         unique_names: bool,
+        rigid: frozenset[tuple[str, int]],
         has_axioms: bool,
     ) -> None:
         self.options = options
@@ -369,6 +372,7 @@ class _Saturation:
         self.extra = extra
         self.negated_goal = negated_goal
         self.unique_names = unique_names
+        self.rigid = rigid
         self.own = _Retained(len(axioms.clauses))
         self.queue = ClauseQueue(options.pick_given_ratio, options.unit_preference)
         self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
@@ -431,16 +435,16 @@ class _Saturation:
         return len(self.answers) >= self.max_answers
 
     def _process(self, given: PClause) -> None:
+        renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
+        if self.sld:
+            shared = self.options.goal_selection == "fewest-shared"
+            selected = fewest_partners(given, renamed, self._partners, shared, self.rigid)
+        else:
+            selected = eligible(given.literals, self.selecting)
         for victim in self.own.subsumption.subsumed_by(given):
             victim.dead = True
             self.own.subsumption.note_deleted()
         self._retain(given)
-        renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
-        if self.sld:
-            shared = self.options.goal_selection == "fewest-shared"
-            selected = fewest_partners(given, renamed, self._partners, shared)
-        else:
-            selected = eligible(given.literals, self.selecting)
         for clause in resolvents(given, renamed, selected, self._partners, self.limits):
             self._add_new(clause)
             if self._done():
@@ -496,6 +500,20 @@ class _Saturation:
         else:
             yield from self.axioms.index.partners(literal)
         yield from self.own.index.partners(literal)
+
+    def _rests_on_false_rigid_atom(self, clause: PClause) -> bool:
+        """Whether a goal clause has a literal of a rigid predicate that nothing resolves.
+        Over Horn axioms it can then never be refuted, in this model or any an operator
+        makes (rigid atoms are only deleted), so it is deleted as the paper's evaluation
+        deletes a clause (III.C): it is no part of the difference either."""
+        renamed: tuple[Literal, ...] | None = None
+        for i, (_, atom) in enumerate(clause.literals):
+            if (atom[0], len(atom) - 1) in self.rigid:
+                if renamed is None:
+                    renamed = tuple((pos, offset(a, RENAME_OFFSET)) for pos, a in clause.literals)
+                if not has_partner(clause, renamed, i, self._partners):
+                    return True
+        return False
 
     def _subsumed_by_unit(self, clause: PClause) -> bool:
         return self.axioms.subsumption.is_subsumed_by_unit(
@@ -559,6 +577,8 @@ class _Saturation:
             return
         signature = (simplified.literals, simplified.bindings)
         if signature in self.seen or self._subsumed_by_unit(simplified):
+            return
+        if self.sld and self._rests_on_false_rigid_atom(simplified):
             return
         self.seen.add(signature)
         self.own.register(simplified)
