@@ -94,9 +94,10 @@ def test_fewest_shared_also_binds_a_variable_from_the_other_literals_that_hold_i
     assert "~lift-at(slow0, n4) | ~boarded(p, slow0)  [lift=slow0]" in shared - fewest
 
 
-def test_variables_are_bound_through_rigid_literals_first() -> None:
-    # The same leave(p, lift, n4), told that no operator changes elevator: its partners
-    # are every lift, so each lift is offered, not only the one now at n4.
+def test_a_variable_in_a_literal_nothing_resolves_is_bound_through_rigid_literals() -> None:
+    # The same leave(p, lift, n4), told that no operator changes elevator: boarded(p, lift)
+    # has no partner, so the model cannot settle lift, and every lift is offered, not
+    # only the one now at n4.
     lift = Param("lift")
     axioms = [fact("lift-at", "slow1", "n4"), fact("elevator", "slow0"), fact("elevator", "slow1")]
     wanted = goal(("elevator", lift), ("lift-at", lift, "n4"), ("boarded", "p", lift))
@@ -109,6 +110,23 @@ def test_variables_are_bound_through_rigid_literals_first() -> None:
         left = {str(c) for c in result.uncompleted}
         assert "~boarded(p, slow1)  [lift=slow1]" in left
         assert "~lift-at(slow0, n4) | ~boarded(p, slow0)  [lift=slow0]" in left
+
+
+def test_a_variable_two_changeable_literals_bind_is_bound_through_rigid_literals() -> None:
+    # load-airplane(obj, plane, loc): the package is at pos2, the plane at apt1, and the
+    # plan needs both at apt2, which neither literal's partners offer.
+    loc = Param("loc")
+    axioms = [fact("at", "obj", "pos2"), fact("at", "plane", "apt1"),
+              *[fact("place", p) for p in ("pos2", "apt1", "apt2")]]
+    wanted = goal(("place", loc), ("at", "obj", loc), ("at", "plane", loc))
+    left = {str(c) for c in SLD.prove(ProofTask(axioms, wanted, rigid={("place", 1)})).uncompleted}
+    assert "~at(obj, apt2) | ~at(plane, apt2)  [loc=apt2]" in left
+    assert "~at(plane, pos2)  [loc=pos2]" in left
+    # A variable the model settles is bound through the facts: one literal binds loc.
+    settled = goal(("place", loc), ("at", "plane", loc), ("ready", "plane"))
+    left = {str(c) for c in SLD.prove(ProofTask(axioms, settled, rigid={("place", 1)})).uncompleted}
+    assert "~ready(plane)  [loc=apt1]" in left
+    assert not any("apt2" in clause for clause in left)
 
 
 def test_a_goal_clause_resting_on_a_false_rigid_atom_is_no_difference() -> None:

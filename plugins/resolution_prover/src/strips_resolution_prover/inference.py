@@ -205,43 +205,59 @@ def fewest_partners(
     rigid: AbstractSet[tuple[str, int]] = frozenset(),
 ) -> tuple[int, ...]:
     """The literals a goal clause over Horn axioms resolves on: a ground one with a
-    partner if there is one (the first), else the literals tied at the fewest partners,
-    among the literals of ``rigid`` predicates (as ``(name, arity)``) with any if there
-    are such, else among the others with any; with ``shared`` also every literal with a
-    partner that shares a variable with the first of them; none when no literal has a
-    partner.
+    partner if there is one (the first); else, if a variable is *unsettled*, the literals
+    of ``rigid`` predicates (as ``(name, arity)``) with partners that hold one, tied at
+    the fewest partners; else every literal tied at the fewest partners among those
+    that have any; with ``shared`` also every literal with a partner that shares a
+    variable with the first of them; none when no literal has a partner.
 
     Any nonempty choice keeps SLD resolution complete, so the choice only shapes the
     search. Resolving a ground literal binds nothing, so the order in which ground
     literals go changes no answer and no difference: one at a time leaves one clause
     where resolving each would make every subset of them. Which literal binds a variable
-    decides what a failed proof leaves as differences: ``leave(p, lift, f)`` bound
-    through ``lift-at(lift, f)`` offers only the lifts now at ``f``, and a plan that
-    needs another lift there never shows. The partners of a literal no operator can
-    change are every value its variables can ever take, so variables are bound through
-    rigid literals first, and what is left for the difference are the literals operators
-    can change (the paper's "heuristically select some part of P"). Among literals of
-    one kind the fewest partners go first ("first fail"). ``shared`` lets every literal
-    that could bind the same variable do so too, which keeps more alternatives at the
-    price of more clauses. A literal nothing resolves is left for the difference.
+    decides what a failed proof leaves as differences. Binding it through the model's
+    facts ("first fail": fewest partners first) offers the values it has now, which is
+    cheap and usually enough. It is not when the model cannot settle the variable: when
+    it occurs in a literal of a changeable predicate that nothing resolves
+    (``leave(p, lift, f)`` with ``p`` in no lift: binding ``lift`` through
+    ``lift-at(lift, f)`` offers only the lifts now at ``f``), or in two such literals
+    that both have partners (``load-airplane(obj, plane, loc)``: the package's place and
+    the plane's may both be wrong, and the airport they must meet at is neither). The
+    partners of a rigid literal, which no operator changes, are every value a variable
+    can ever take, so an unsettled variable is bound through them, and the difference
+    is left with literals operators can change (the paper's "heuristically select some
+    part of P"). ``shared`` lets every literal that could bind the same variable do so
+    too, which keeps more alternatives at the price of more clauses. A literal nothing
+    resolves is left for the difference.
     """
-    fluent: list[tuple[int, int]] = []
-    fixed: list[tuple[int, int]] = []
+    counts: list[tuple[int, int]] = []
+    unsettled: set[object] = set()
+    changeable: set[object] = set()
     for i, (_, atom) in enumerate(renamed):
         count = sum(1 for _ in _unifiers(given, renamed, i, partners))
         if count and is_ground(atom):
             return (i,)
         if count:
-            (fixed if (atom[0], len(atom) - 1) in rigid else fluent).append((count, i))
-    counts = fixed or fluent
+            counts.append((count, i))
+        if (atom[0], len(atom) - 1) not in rigid:
+            variables = _unbound(atom)
+            unsettled |= variables if not count else variables & changeable
+            if count:
+                changeable |= variables
     if not counts:
         return ()
-    fewest, first = min(counts)
+    drawn = [
+        (count, i)
+        for count, i in counts
+        if (renamed[i][1][0], len(renamed[i][1]) - 1) in rigid and unsettled & _unbound(renamed[i][1])
+    ]
+    pool = drawn or counts
+    fewest, first = min(pool)
     unbound = _unbound(renamed[first][1]) if shared else set()
     return tuple(
         i
-        for count, i in sorted(fixed + fluent, key=lambda item: item[1])
-        if (count == fewest and (count, i) in counts) or unbound & _unbound(renamed[i][1])
+        for count, i in counts
+        if (count == fewest and (count, i) in pool) or unbound & _unbound(renamed[i][1])
     )
 
 
