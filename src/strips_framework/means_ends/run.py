@@ -83,15 +83,17 @@ class MeansEndsRun:
         applied: OperatorInstance | None = None,
     ) -> Node | None:
         """Make a node and try its first goal; return the goal node if the task is solved.
+        A (model, goal list) already made is not made again: its node is the same
+        problem, already in the tree (on depot, a quarter of the successors repeat one).
 
         Proved preconditions are applied in a loop rather than by recursion, since a chain
         of applications can be as long as the goal list.
         """
         while True:
-            node = self.tree.new_node(model, goals, parent, plan, applied)
             if (model, goals) in self.seen:
                 return None  # the same problem is already being worked on elsewhere
             self.seen.add((model, goals))
+            node = self.tree.new_node(model, goals, parent, plan, applied)
             first = goals[0]
             result = self.goal_prover.prove(model, first.formula)
             if not result.proved:
