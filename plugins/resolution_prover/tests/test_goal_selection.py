@@ -127,6 +127,12 @@ def test_a_variable_two_changeable_literals_bind_is_bound_through_rigid_literals
     left = {str(c) for c in SLD.prove(ProofTask(axioms, settled, rigid={("place", 1)})).uncompleted}
     assert "~ready(plane)  [loc=apt1]" in left
     assert not any("apt2" in clause for clause in left)
+    # So is one two literals bind alike: both are at apt1 already.
+    together = [fact("at", "obj", "apt1"), *axioms[1:]]
+    wanted = goal(("place", loc), ("at", "obj", loc), ("at", "plane", loc), ("ready", "plane"))
+    left = {str(c) for c in SLD.prove(ProofTask(together, wanted, rigid={("place", 1)})).uncompleted}
+    assert "~ready(plane)  [loc=apt1]" in left
+    assert not any("apt2" in clause for clause in left)
 
 
 def test_a_goal_clause_resting_on_a_false_rigid_atom_is_no_difference() -> None:

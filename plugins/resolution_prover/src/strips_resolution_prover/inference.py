@@ -221,29 +221,36 @@ def fewest_partners(
     it occurs in a literal of a changeable predicate that nothing resolves
     (``leave(p, lift, f)`` with ``p`` in no lift: binding ``lift`` through
     ``lift-at(lift, f)`` offers only the lifts now at ``f``), or in two such literals
-    that both have partners (``load-airplane(obj, plane, loc)``: the package's place and
-    the plane's may both be wrong, and the airport they must meet at is neither). The
-    partners of a rigid literal, which no operator changes, are every value a variable
-    can ever take, so an unsettled variable is bound through them, and the difference
-    is left with literals operators can change (the paper's "heuristically select some
-    part of P"). ``shared`` lets every literal that could bind the same variable do so
+    whose partners give it no value in common (``load-airplane(obj, plane, loc)`` with
+    the package and the plane in different places: the airport where they must meet may
+    be neither). The partners of a rigid literal, which no operator changes, are every
+    value a variable can ever take, so an unsettled variable is bound through them, and
+    the difference is left with literals operators can change (the paper's
+    "heuristically select some part of P"). ``shared`` lets every literal that could bind the same variable do so
     too, which keeps more alternatives at the price of more clauses. A literal nothing
     resolves is left for the difference.
     """
     counts: list[tuple[int, int]] = []
     unsettled: set[object] = set()
-    changeable: set[object] = set()
+    #: The values the changeable literals with partners leave each variable.
+    offered: dict[object, set[Term]] = {}
     for i, (_, atom) in enumerate(renamed):
-        count = sum(1 for _ in _unifiers(given, renamed, i, partners))
-        if count and is_ground(atom):
+        unifiers = [subst for _, _, subst in _unifiers(given, renamed, i, partners)]
+        if unifiers and is_ground(atom):
             return (i,)
-        if count:
-            counts.append((count, i))
-        if (atom[0], len(atom) - 1) not in rigid:
-            variables = _unbound(atom)
-            unsettled |= variables if not count else variables & changeable
-            if count:
-                changeable |= variables
+        if unifiers:
+            counts.append((len(unifiers), i))
+        if (atom[0], len(atom) - 1) in rigid:
+            continue
+        for variable in _unbound(atom):
+            if not unifiers:
+                unsettled.add(variable)
+                continue
+            values = {substitute(variable, subst) for subst in unifiers}
+            known = offered.get(variable)
+            offered[variable] = values if known is None else known & values
+            if known is not None and not offered[variable]:
+                unsettled.add(variable)
     if not counts:
         return ()
     drawn = [
