@@ -1,6 +1,8 @@
-"""The means-ends search's bookkeeping: a node is a (world model, goal list) made once."""
+"""The means-ends search's bookkeeping: a (world model, goal list) is made a node once,
+and nodes that share a model and first goal share its analysis."""
 
 from pathlib import Path
+from types import SimpleNamespace
 
 from strips_framework.formats.native import parse_problem
 from strips_framework.limits import Clock, Limits
@@ -24,15 +26,51 @@ class _Level:
         return 0.0
 
 
-def test_a_model_and_goal_list_already_made_is_not_made_again():
+class _Counting:
+    """:class:`AddListRelevance`, counting the differences it is asked about."""
+
+    name = "counting"
+
+    def __init__(self) -> None:
+        self.asked = 0
+
+    def for_problem(self, operators, initial):
+        index = AddListRelevance().for_problem(operators, initial)
+
+        def relevant(difference, model):
+            self.asked += 1
+            return index.relevant(difference, model)
+
+        return SimpleNamespace(relevant=relevant)
+
+
+def _run(relevance):
     problem = parse_problem(THREE_BOXES.read_text(), str(THREE_BOXES))
     limits = Limits()
     prover = GoalProver(problem, ResolutionProver(), limits.effort)
-    run = MeansEndsRun(8, problem, prover, UncompletedProofDifference(), AddListRelevance(),
+    run = MeansEndsRun(8, problem, prover, UncompletedProofDifference(), relevance,
                        _Level(), limits, Clock(limits.time))
-    root, goals = prover.root_model(), (Goal(problem.goal),)
-    assert run._make(root, goals, None, ()) is None  # the goal does not hold in M0
+    return run, prover.root_model(), Goal(problem.goal)
+
+
+def test_a_model_and_goal_list_already_made_is_not_made_again():
+    run, root, top = _run(AddListRelevance())
+    assert run._make(root, (top,), None, ()) is None  # the goal does not hold in M0
     assert len(run.tree.nodes) == 1
-    assert run._make(root, goals, None, ()) is None
+    assert run._make(root, (top,), None, ()) is None
     assert len(run.tree.nodes) == 1  # the same problem: no second node, no second attempt
-    assert prover.attempts == 1
+    assert run.goal_prover.attempts == 1
+
+
+def test_nodes_sharing_a_model_and_first_goal_share_its_difference_and_relevant_instances():
+    counting = _Counting()
+    run, root, top = _run(counting)
+    run._make(root, (top,), None, ())
+    first = run.tree.nodes[0]
+    # The same goal first, another after it: a node of its own, the same analysis.
+    operator = first.pending[0].operator
+    run._make(root, (top, Goal(operator.precondition(), operator)), None, ())
+    second = run.tree.nodes[1]
+    assert counting.asked == 1
+    assert second.difference is first.difference
+    assert [r.operator for r in second.pending] == [r.operator for r in first.pending[1:]]

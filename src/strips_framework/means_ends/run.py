@@ -7,6 +7,7 @@ from __future__ import annotations
 import heapq
 
 from strips_framework.limits import Clock, LimitReached, Limits
+from strips_framework.logic.formulas import Formula
 from strips_framework.means_ends.components import (
     DifferenceExtractor,
     NodeEvaluator,
@@ -14,7 +15,7 @@ from strips_framework.means_ends.components import (
     evaluator_for_problem,
 )
 from strips_framework.means_ends.goal_prover import GoalProver
-from strips_framework.means_ends.node import Goal, Node
+from strips_framework.means_ends.node import Difference, Goal, Node, RelevantInstance
 from strips_framework.means_ends.tree import SearchTree
 from strips_framework.result import Result, Status
 from strips_framework.worldmodel.operators import OperatorInstance
@@ -46,6 +47,9 @@ class MeansEndsRun:
         self.queue: list[tuple[float, int, Node]] = []
         self.pushes = 0
         self.seen: set[tuple[WorldModel, tuple[Goal, ...]]] = set()
+        self.analysed: dict[
+            tuple[WorldModel, Formula], tuple[Difference, list[RelevantInstance] | None]
+        ] = {}
         self.top_goal = Goal(problem.goal)
 
     def search(self) -> Result:
@@ -108,15 +112,22 @@ class MeansEndsRun:
             plan, applied = (*plan, *operator.steps()), operator
 
     def _set_difference(self, node: Node, result: ProofResult) -> None:
-        negated = self.goal_prover.negated(node.goals[0].formula)
-        node.difference = self.differences.extract(result, negated)
+        """The difference and relevant instances depend on the model and the first goal
+        only, so nodes that share them (a subproblem reached under different goal
+        lists) share one computation of each."""
+        key = (node.model, node.goals[0].formula)
+        known = self.analysed.get(key)
+        if known is None:
+            negated = self.goal_prover.negated(node.goals[0].formula)
+            known = (self.differences.extract(result, negated), None)
+            self.analysed[key] = known
+        node.difference, relevant = known
         if len(node.goals) >= self.max_goals:
             return
+        if relevant is None:
+            relevant = self.relevance.relevant(node.difference, node.model)
+            self.analysed[key] = (node.difference, relevant)
         on_goal_list = {goal.operator for goal in node.goals}
-        node.pending = [
-            found
-            for found in self.relevance.relevant(node.difference, node.model)
-            if found.operator not in on_goal_list
-        ]
+        node.pending = [found for found in relevant if found.operator not in on_goal_list]
         if node.pending:
             self._push(node)
