@@ -14,7 +14,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
-from strips_framework.logic.terms import Param, Term, is_ground, params_of, variables_of
+from strips_framework.logic.terms import Param, Term, is_ground, params_of, subterms, variables_of
 from strips_framework.logic.unify import Substitution, substitute, unify
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
@@ -192,9 +192,12 @@ def resolvents(
                 yield clause
 
 
-def has_partner(given: PClause, renamed: tuple[Literal, ...], i: int, partners: Partners) -> bool:
-    """Whether literal ``i`` of the given clause (renamed apart) resolves with anything."""
-    return next(_unifiers(given, renamed, i, partners), None) is not None
+def partner_count(
+    given: PClause, renamed: tuple[Literal, ...], i: int, partners: Partners, offers: Offers
+) -> int:
+    """How many partners literal ``i`` of a goal clause (renamed apart) has (see
+    :func:`_offer`)."""
+    return _offer(given, renamed, i, partners, offers)[0]
 
 
 def fewest_partners(
@@ -202,7 +205,8 @@ def fewest_partners(
     renamed: tuple[Literal, ...],
     partners: Partners,
     shared: bool,
-    rigid: AbstractSet[tuple[str, int]] = frozenset(),
+    rigid: AbstractSet[tuple[str, int]],
+    offers: Offers,
 ) -> tuple[int, ...]:
     """The literals a goal clause over Horn axioms resolves on: a ground one with a
     partner if there is one (the first); else, if a variable is *unsettled*, the literals
@@ -228,25 +232,30 @@ def fewest_partners(
     the difference is left with literals operators can change (the paper's
     "heuristically select some part of P"). ``shared`` lets every literal that could bind the same variable do so
     too, which keeps more alternatives at the price of more clauses. A literal nothing
-    resolves is left for the difference.
+    resolves is left for the difference. ``offers`` is the attempt's memo of what each
+    literal's partners offer (see :func:`_offer`).
     """
+    open_literals = []
+    for i, (_, atom) in enumerate(renamed):
+        if not is_ground(atom):
+            open_literals.append(i)
+        elif partner_count(given, renamed, i, partners, offers):
+            return (i,)
     counts: list[tuple[int, int]] = []
     unsettled: set[object] = set()
     #: The values the changeable literals with partners leave each variable.
-    offered: dict[object, set[Term]] = {}
-    for i, (_, atom) in enumerate(renamed):
-        unifiers = [subst for _, _, subst in _unifiers(given, renamed, i, partners)]
-        if unifiers and is_ground(atom):
-            return (i,)
-        if unifiers:
-            counts.append((len(unifiers), i))
+    offered: dict[object, frozenset[Term]] = {}
+    for i in open_literals:
+        atom = renamed[i][1]
+        count, values_of = _offer(given, renamed, i, partners, offers)
+        if count:
+            counts.append((count, i))
         if (atom[0], len(atom) - 1) in rigid:
             continue
-        for variable in _unbound(atom):
-            if not unifiers:
+        for variable, values in zip(_open_terms(atom), values_of):
+            if not count:
                 unsettled.add(variable)
                 continue
-            values = {substitute(variable, subst) for subst in unifiers}
             known = offered.get(variable)
             offered[variable] = values if known is None else known & values
             if known is not None and not offered[variable]:
@@ -266,6 +275,48 @@ def fewest_partners(
         for count, i in counts
         if (count == fewest and (count, i) in pool) or unbound & _unbound(renamed[i][1])
     )
+
+
+#: What an attempt has found a goal literal's partners offer, by the literal's pattern.
+Offers = dict[tuple, tuple[int, tuple[frozenset[Term], ...]]]
+
+
+def _offer(
+    given: PClause, renamed: tuple[Literal, ...], i: int, partners: Partners, offers: Offers
+) -> tuple[int, tuple[frozenset[Term], ...]]:
+    """How many partners literal ``i`` has, and the values they give each of its open
+    terms (:func:`_open_terms`). Over Horn axioms a goal literal's partners are the
+    attempt's axioms, which do not change while it runs, so the answer depends only on the
+    literal's pattern (its variables numbered in order) and is worked out once."""
+    atom = renamed[i][1]
+    opened = _open_terms(atom)
+    numbering = {term: n for n, term in enumerate(opened) if type(term) is int}
+    key = _pattern(atom, numbering)
+    known = offers.get(key)
+    if known is None:
+        unifiers = [subst for _, _, subst in _unifiers(given, renamed, i, partners)]
+        values = tuple(frozenset(substitute(term, subst) for subst in unifiers) for term in opened)
+        known = (len(unifiers), values)
+        offers[key] = known
+    return known
+
+
+def _open_terms(atom: tuple) -> list[object]:
+    """The variables and unbound parameters of ``atom``, in order of first occurrence."""
+    found: dict[object, None] = {}
+    for arg in atom[1:]:
+        for term in subterms(arg):
+            if type(term) is int or type(term) is Param:
+                found.setdefault(term)
+    return list(found)
+
+
+def _pattern(term: object, numbering: dict[object, int]) -> object:
+    if type(term) is int:
+        return ("?", numbering[term])
+    if type(term) is tuple:
+        return tuple(_pattern(arg, numbering) if n else arg for n, arg in enumerate(term))
+    return term
 
 
 def _unbound(atom: tuple) -> set[object]:

@@ -64,10 +64,11 @@ from strips_resolution_prover.equality import (
 from strips_resolution_prover.inference import (
     RENAME_OFFSET,
     Limits,
+    Offers,
     eligible,
     factors,
     fewest_partners,
-    has_partner,
+    partner_count,
     resolvents,
 )
 from strips_resolution_prover.partners import PartnerIndex
@@ -373,6 +374,8 @@ class _Saturation:
         self.negated_goal = negated_goal
         self.unique_names = unique_names
         self.rigid = rigid
+        #: What goal literals' partners offer (:func:`.inference.fewest_partners`).
+        self.offers: Offers = {}
         self.own = _Retained(len(axioms.clauses))
         self.queue = ClauseQueue(options.pick_given_ratio, options.unit_preference)
         self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
@@ -438,7 +441,9 @@ class _Saturation:
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
         if self.sld:
             shared = self.options.goal_selection == "fewest-shared"
-            selected = fewest_partners(given, renamed, self._partners, shared, self.rigid)
+            selected = fewest_partners(
+                given, renamed, self._partners, shared, self.rigid, self.offers
+            )
         else:
             selected = eligible(given.literals, self.selecting)
         for victim in self.own.subsumption.subsumed_by(given):
@@ -511,7 +516,7 @@ class _Saturation:
             if (atom[0], len(atom) - 1) in self.rigid:
                 if renamed is None:
                     renamed = tuple((pos, offset(a, RENAME_OFFSET)) for pos, a in clause.literals)
-                if not has_partner(clause, renamed, i, self._partners):
+                if not partner_count(clause, renamed, i, self._partners, self.offers):
                     return True
         return False
 
