@@ -438,6 +438,10 @@ class _Saturation:
         return len(self.answers) >= self.max_answers
 
     def _process(self, given: PClause) -> None:
+        for victim in self.own.subsumption.subsumed_by(given):
+            victim.dead = True
+            self.own.subsumption.note_deleted()
+        self._retain(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
         if self.sld:
             shared = self.options.goal_selection == "fewest-shared"
@@ -446,10 +450,6 @@ class _Saturation:
             )
         else:
             selected = eligible(given.literals, self.selecting)
-        for victim in self.own.subsumption.subsumed_by(given):
-            victim.dead = True
-            self.own.subsumption.note_deleted()
-        self._retain(given)
         for clause in resolvents(given, renamed, selected, self._partners, self.limits):
             self._add_new(clause)
             if self._done():
