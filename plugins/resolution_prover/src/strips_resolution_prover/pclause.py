@@ -120,14 +120,19 @@ def term_weight(term: Term) -> int:
 def features_of(literals: tuple[Literal, ...]) -> frozenset[object]:
     """Features that a clause's instances keep, for subsumption's subset pre-filter.
 
-    A substitution only adds structure, and (multiset) subsumption maps literals one-to-one,
-    so a subsumer's features are a subset of the subsumed clause's: the k-th literal with a
-    (polarity, predicate) key, the symbol at the top of each argument position of each key,
-    and every constant, functor and parameter in the clause.
+    A substitution only adds structure, and (multiset) subsumption maps literals one-to-one
+    onto literals with the same (polarity, predicate) key, so a subsumer's features are a
+    subset of the subsumed clause's. E's feature vectors hold counts; a count ``n`` is
+    written here as the features ``(x, 1) .. (x, n)``, so that one frozenset comparison
+    (in C) tests every count at once:
+
+    - ``(key, k)``: at least ``k`` literals with that key;
+    - ``(key, position, symbol)``: a literal with that key has ``symbol`` on top there;
+    - ``(symbol, k)``: a constant, functor or parameter occurs at least ``k`` times;
+    - ``(key, "depth", k)``: a literal with that key has a term nested ``k`` deep.
     """
     found: set[object] = set()
-    counts: dict[tuple[bool, str, int], int] = {}
-    stack: list[Term] = []
+    counts: dict[object, int] = {}
     for positive, atom in literals:
         key = (positive, atom[0], len(atom))
         counts[key] = count = counts.get(key, 0) + 1
@@ -137,15 +142,19 @@ def features_of(literals: tuple[Literal, ...]) -> frozenset[object]:
             kind = type(arg)
             if kind is not int:
                 found.add((key, position, arg[0] if kind is tuple else arg))
-            stack.append(arg)
-    while stack:
-        term = stack.pop()
-        kind = type(term)
-        if kind is tuple:
-            found.add(term[0])
-            stack.extend(term[1:])
-        elif kind is not int:
-            found.add(term)
+        found.update((key, "depth", k) for k in range(1, term_depth(atom)))
+        stack: list[Term] = list(atom[1:])
+        while stack:
+            term = stack.pop()
+            kind = type(term)
+            if kind is int:
+                continue
+            symbol = term
+            if kind is tuple:
+                symbol = term[0]
+                stack.extend(term[1:])
+            counts[symbol] = count = counts.get(symbol, 0) + 1
+            found.add((symbol, count))
     return frozenset(found)
 
 

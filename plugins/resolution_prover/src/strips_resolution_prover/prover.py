@@ -79,10 +79,13 @@ from strips_resolution_prover.pclause import (
     term_depth,
 )
 from strips_resolution_prover.selection import ClauseQueue
-from strips_resolution_prover.subsumption import SubsumptionIndex
+from strips_resolution_prover.subsumption import MatchWork, SubsumptionIndex
 
 #: The values of ``goal_selection`` (see :class:`ResolutionProver`).
 GOAL_SELECTIONS = ("every", "fewest", "fewest-shared")
+#: Subsumption matcher steps (literal pairings tried) that count as one given clause of
+#: the effort bound: about the time a given clause's inferences take.
+MATCH_STEPS_PER_GIVEN = 1000
 
 
 @define(frozen=True)
@@ -395,6 +398,7 @@ class _Saturation:
             and not any(_positives(c) for c in negated_goal)
         )
         self._names: tuple[str, ...] | None = None
+        self.work = MatchWork()
 
     # -- the loop -----------------------------------------------------------------------
 
@@ -415,23 +419,29 @@ class _Saturation:
             imported = from_clause(goal, sos=True)
             if imported is not None:
                 self._add_new(imported)
-        effort = 0
-        while not self._done() and effort < effort_bound:
+        given_clauses = 0
+        while not self._done() and self._effort(given_clauses) < effort_bound:
             given = self.queue.pop()
             if given is None:
                 break
             if self._answered(given) or self._subsumed(given):
                 given.dead = True
                 continue
-            effort += 1
+            given_clauses += 1
             self._process(given)
-        return self._result(effort)
+        return self._result(self._effort(given_clauses))
+
+    def _effort(self, given_clauses: int) -> int:
+        """Effort spent: given clauses, and subsumption matching at
+        :data:`MATCH_STEPS_PER_GIVEN` steps each, so that no part of the loop runs
+        unbounded while the count of given clauses stands still."""
+        return given_clauses + self.work.steps // MATCH_STEPS_PER_GIVEN
 
     def _done(self) -> bool:
         return len(self.answers) >= self.max_answers
 
     def _process(self, given: PClause) -> None:
-        for victim in self.own.subsumption.subsumed_by(given):
+        for victim in self.own.subsumption.subsumed_by(given, self.work):
             victim.dead = True
             self.own.subsumption.note_deleted()
         self._retain(given)
@@ -504,8 +514,8 @@ class _Saturation:
 
     def _subsumed(self, clause: PClause) -> bool:
         return self.axioms.subsumption.is_subsumed(
-            clause, self.hidden
-        ) or self.own.subsumption.is_subsumed(clause)
+            clause, self.work, self.hidden
+        ) or self.own.subsumption.is_subsumed(clause, self.work)
 
     def _clause(self, cid: int) -> PClause:
         first = self.own.first_id
