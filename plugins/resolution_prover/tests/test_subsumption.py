@@ -19,7 +19,13 @@ from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import GAVE_UP, ProofTask
 from strips_resolution_prover import ResolutionProver
 from strips_resolution_prover.pclause import PClause, from_clause
-from strips_resolution_prover.subsumption import MATCH_BUDGET, MatchWork, match_term, subsumes
+from strips_resolution_prover.subsumption import (
+    MATCH_BUDGET,
+    MatchWork,
+    SubsumptionIndex,
+    match_term,
+    subsumes,
+)
 
 
 def _clause(*literals: Literal, bindings: tuple = ()) -> PClause:
@@ -132,3 +138,34 @@ def test_subsumes_agrees_with_the_definition(c: list[Literal], d: list[Literal])
     if pattern is None or target is None:
         return  # a tautology
     assert subsumes(pattern, target) == _by_definition(pattern, target)
+
+
+@settings(max_examples=200, derandomize=True, database=None, deadline=None)
+@given(
+    units=st.lists(LITERALS, min_size=1, max_size=6),
+    d=st.lists(LITERALS, min_size=1, max_size=3, unique=True),
+)
+def test_the_unit_index_finds_every_matching_unit(units: list[Literal], d: list[Literal]) -> None:
+    # Units are filed by the top symbols of their arguments and looked up under every
+    # generalization of a literal's: a unit with a variable, or the same symbol, at
+    # each position. Whatever the index skips must be a unit that does not match.
+    index = SubsumptionIndex()
+    for unit in units:
+        clause = from_clause(Clause([unit]), sos=True)
+        assert clause is not None
+        index.add(clause, deletable=True)
+    target = from_clause(Clause(d), sos=True)
+    if target is None:
+        return
+    expected = any(
+        pos == tpos and match_term(_renumbered(atom), tatom, {})
+        for pos, atom in units
+        for tpos, tatom in target.literals
+    )
+    assert index.is_subsumed_by_unit(target) == expected
+
+
+def _renumbered(atom: tuple) -> tuple:
+    clause = from_clause(Clause([(True, atom)]), sos=True)
+    assert clause is not None
+    return clause.literals[0][1]

@@ -13,6 +13,7 @@ candidate before any matching is tried. The matcher (:func:`_match`) is bounded 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from itertools import product
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
@@ -161,17 +162,34 @@ def subsumes(c: PClause, d: PClause, work: MatchWork | None = None) -> bool:
     return _match(c.literals, d.literals, MatchWork() if work is None else work)
 
 
+#: How many leading argument positions key a non-ground unit by their top symbols (E's
+#: fingerprint indexing samples positions the same way); a literal is looked up under at
+#: most 2**k keys, one per choice of its symbol or "a variable" at each position.
+UNIT_KEY_POSITIONS = 3
+
+
+def _tops(atom: tuple) -> tuple[object, ...]:
+    """The top symbols of the first :data:`UNIT_KEY_POSITIONS` arguments, ``None`` for a
+    variable."""
+    tops: list[object] = []
+    for arg in atom[1 : 1 + UNIT_KEY_POSITIONS]:
+        kind = type(arg)
+        tops.append(arg[0] if kind is tuple else None if kind is int else arg)
+    return tuple(tops)
+
+
 def _unit_key(positive: bool, atom: tuple) -> tuple[object, ...]:
-    """A unit's index key: its predicate key and the top symbol of its first argument
-    (``None`` for a variable or no argument); a unit can only match a literal whose key is
-    the same or has a variable there."""
-    top = atom[1] if len(atom) > 1 else None
-    kind = type(top)
-    if kind is tuple:
-        top = top[0]
-    elif kind is int:
-        top = None
-    return positive, atom[0], len(atom), top
+    """A unit's index key: its predicate key and its :func:`_tops`."""
+    return positive, atom[0], len(atom), _tops(atom)
+
+
+def _generalization_keys(positive: bool, atom: tuple) -> Iterator[tuple[object, ...]]:
+    """The keys of the units that may match ``atom``: at each position its own top symbol
+    or a variable (a symbol of the unit never matches a variable of the target, which
+    stands for itself here)."""
+    choices = [(top,) if top is None else (top, None) for top in _tops(atom)]
+    for tops in product(*choices):
+        yield positive, atom[0], len(atom), tops
 
 
 def _is_ground(term: Term) -> bool:
@@ -190,7 +208,8 @@ class SubsumptionIndex:
     - Ground units are kept in a hash table by literal: a ground unit subsumes exactly the
       clauses containing its literal, so the check is one lookup per literal. World models
       are mostly ground facts, so this is where STRIPS's checks end.
-    - Other units are filed by :func:`_unit_key`.
+    - Other units are filed by :func:`_unit_key` (the top symbols of their leading
+      arguments) and found under :func:`_generalization_keys`.
     - Longer clauses are filed under the key of their first literal and their first
       parameter binding (``None`` if they made none): a subsumer's keys and bindings are
       subsets of the subsumed clause's, so forward subsumption of ``d`` only looks at the
@@ -241,8 +260,7 @@ class SubsumptionIndex:
         if not self._units:
             return False
         for positive, atom in d.literals:
-            key = _unit_key(positive, atom)
-            for unit_key in (key, key[:3] + (None,)) if key[3] is not None else (key,):
+            for unit_key in _generalization_keys(positive, atom):
                 for unit in self._units.get(unit_key, ()):
                     if (
                         not unit.dead
