@@ -140,22 +140,34 @@ def features_of(literals: tuple[Literal, ...]) -> frozenset[object]:
         for position in range(1, len(atom)):
             arg = atom[position]
             kind = type(arg)
-            if kind is not int:
-                found.add((key, position, arg[0] if kind is tuple else arg))
-        found.update((key, "depth", k) for k in range(1, term_depth(atom)))
-        stack: list[Term] = list(atom[1:])
-        while stack:
-            term = stack.pop()
-            kind = type(term)
             if kind is int:
                 continue
-            symbol = term
             if kind is tuple:
-                symbol = term[0]
-                stack.extend(term[1:])
-            counts[symbol] = count = counts.get(symbol, 0) + 1
-            found.add((symbol, count))
+                found.add((key, position, arg[0]))
+                for k in range(1, _count_symbols(arg, counts, found) + 1):
+                    found.add((key, "depth", k))
+            else:
+                found.add((key, position, arg))
+                counts[arg] = count = counts.get(arg, 0) + 1
+                found.add((arg, count))
     return frozenset(found)
+
+
+def _count_symbols(term: tuple, counts: dict[object, int], found: set[object]) -> int:
+    """Count the symbols of a compound ``term`` into ``counts`` and ``found`` (as in
+    :func:`features_of`); its depth."""
+    symbol = term[0]
+    counts[symbol] = count = counts.get(symbol, 0) + 1
+    found.add((symbol, count))
+    deepest = 0
+    for arg in term[1:]:
+        kind = type(arg)
+        if kind is tuple:
+            deepest = max(deepest, _count_symbols(arg, counts, found))
+        elif kind is not int:
+            counts[arg] = count = counts.get(arg, 0) + 1
+            found.add((arg, count))
+    return deepest + 1
 
 
 def term_depth(term: Term) -> int:

@@ -112,6 +112,12 @@ def _match(pattern: tuple[Literal, ...], target: tuple[Literal, ...], work: Matc
     assigned by backtracking, most constrained first, and the rest, independent of the
     substitution, by a bipartite matching at each leaf."""
     work.steps += len(pattern) * len(target)
+    if len(pattern) == 1:  # a unit: any one match (backward subsumption by unit givens)
+        positive, atom = pattern[0]
+        return any(
+            target_positive is positive and match_term(atom, target_atom, {})
+            for target_positive, target_atom in target
+        )
     options: list[Candidates] = []
     for literal in pattern:
         found = _candidates(literal, target)
@@ -119,8 +125,6 @@ def _match(pattern: tuple[Literal, ...], target: tuple[Literal, ...], work: Matc
             return False
         options.append(found)
     used = [False] * len(target)
-    if not _assignable(options, used):
-        return False
     occurrences: dict[int, int] = {}
     for found in options:
         for var in found[0][1]:
