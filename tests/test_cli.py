@@ -90,6 +90,13 @@ def test_prove_reports_an_szs_status(tmp_path, capsys, status):
     assert f"SZS status {status}" in capsys.readouterr().out
 
 
+def test_prove_reports_a_theorem_whose_only_answer_is_disjunctive(tmp_path, capsys):
+    problem = tmp_path / "either.p"
+    problem.write_text("cnf(a, axiom, p(a) | p(b)).\nfof(q, question, ? [X] : p(X)).\n")
+    assert main(["prove", str(problem)]) == 0
+    assert capsys.readouterr().out == "% SZS status Theorem for either\n"
+
+
 @pytest.mark.parametrize("prover", ["resolution", "z3"])
 def test_prove_with_a_prover_named_on_the_command_line(tmp_path, capsys, prover):
     # Satisfiable, which only a prover that reasons (not one that gives up) reports.

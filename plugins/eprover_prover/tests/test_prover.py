@@ -22,6 +22,7 @@ from strips_framework.worldmodel.simulate import replay
 
 needs_e = pytest.mark.skipif(shutil.which("eprover") is None, reason="eprover not installed")
 M = Param("m")
+N = Param("n")
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 
 
@@ -54,6 +55,27 @@ def test_a_disjunctive_answer_binds_nothing() -> None:
     disjunctive = "# SZS answers Tuple [([esk1_1(f5)]|[f1]|[X1]|[$answer(X1)])|_] for goal"
     definite = f"# SZS answers Tuple [[{table.symbol('f', 'a')}]|_] for goal"
     assert parse_answers([disjunctive, definite], table) == [((M, "a"),)]
+
+
+def test_a_variable_standing_for_two_parameters_binds_nothing() -> None:
+    # exists n, m: n = m is E's [[X1, X1]]: the two must be equal, which no binding per
+    # parameter says; leaving both open claimed n = m for every n and m (differential
+    # run, 5,000 cases). A variable alone still leaves its parameter open, and a constant
+    # may stand for both.
+    task = ProofTask([unit(True, "P", "a")], [unit(False, "=", M, N)], max_answers=3)
+    _, table = to_tptp(task)
+    a = table.symbol("f", "a")
+    def line(x: str, y: str) -> str:
+        return f"# SZS answers Tuple [[{x}, {y}]|_] for goal"
+
+    assert parse_answers([line("X1", "X1"), line(a, a)], table) == [((M, "a"), (N, "a"))]
+    assert parse_answers([line("X1", "X2")], table) == [()]
+
+
+@needs_e
+def test_an_equation_between_parameters_is_no_answer_for_all_values() -> None:
+    result = EProver().prove(ProofTask([unit(True, "S")], [unit(False, "=", N, M)]))
+    assert result.answers == ()
 
 
 @needs_e

@@ -247,12 +247,12 @@ def test_automatic_mode_picks_the_calculus_from_the_features() -> None:
     fact, rule = pos("P", "a"), [neg("P", 0), pos("Q", 0)]
     # Definite Horn, no equality, half of it ground facts: a world model, set of support.
     assert plan(clauses([fact], rule)) == "set-of-support"
-    # A rule-only, non-Horn or equational axiom set: saturation first, then SOS.
+    # A rule-only, non-Horn or equational axiom set: saturation and SOS side by side.
     assert plan(clauses(rule)) == "schedule"
     assert plan(clauses([fact], [pos("Q", 0), pos("R", 0)])) == "schedule"
     assert plan(clauses([fact], [pos("=", "a", "b")])) == "schedule"
     assert plan([]) == "saturation"
-    # The schedule saturates first: N(x) -> N(s(x)) from N(z) saturates under literal
+    # The schedule saturates: N(x) -> N(s(x)) from N(z) saturates under literal
     # selection (every clause resolves on its one negative literal), while the set of
     # support alone runs out of effort on ~N(z), N(s(z)) ... backward.
     axioms = clauses([neg("N", ("s", 0)), pos("N", 0)])
@@ -274,3 +274,29 @@ def test_automatic_mode_picks_the_calculus_from_the_features() -> None:
     result = ResolutionProver().prove(ProofTask(grows, goal, effort=2000))
     assert result.status == SATURATED
     assert result.effort_used < 50
+
+
+def test_the_schedule_interleaves_saturation_and_the_set_of_support() -> None:
+    # Six rules P(x) -> P(hi(x)) from P(a): forward, saturation builds every term up to
+    # the goal's depth (hundreds of given clauses); backward, the set of support proves
+    # ~P(h0(h1(h2(h3(a))))) in five. Run one after the other, the set of support would
+    # start only after saturation's share (405 given clauses); side by side it is found
+    # after a few rounds.
+    rules = [[neg("P", 0), pos("P", (f"h{i}", 0))] for i in range(6)]
+    axioms = clauses([pos("P", "a")], *rules, [neg("P", 0), pos("Q", 0), pos("R", 0)])
+    goal = clauses([neg("P", ("h0", ("h1", ("h2", ("h3", "a")))))])
+    assert plan(axioms, goal) == "schedule"
+    result = ResolutionProver().prove(ProofTask(axioms, goal, effort=600))
+    assert result.status == PROVED
+    assert result.effort_used <= 3 * 5
+
+
+def test_a_set_of_support_without_answers_leaves_the_question_to_saturation() -> None:
+    # exists y: Q(y) over P(a), P(x) -> Q(f(x)): backward, m := f(X) is no binding (III.A),
+    # so the set of support runs out of clauses at once; saturation derives Q(f(a)) and
+    # answers m = f(a). The set of support's "no answer" must not end the schedule.
+    axioms = clauses([pos("P", "a")], [neg("P", 0), pos("Q", ("f", 0))], [neg("Q", 0), pos("R", 0)])
+    goal = clauses([neg("Q", M)])
+    assert prove(axioms, goal).status == SATURATED  # the set of support alone
+    result = ResolutionProver().prove(ProofTask(axioms, goal, effort=100))
+    assert result.answers == (((M, ("f", "a")),),)

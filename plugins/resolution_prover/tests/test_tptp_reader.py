@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from strips_framework.errors import InputError
-from strips_framework.formats.tptp import parse_tptp, szs_report, szs_status
+from strips_framework.formats.tptp import parse_tptp, prove_tptp, szs_report, szs_status
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -127,6 +127,32 @@ def test_saturated_question_gives_up() -> None:
     assert result.status == "Satisfiable"
     assert szs_status(problem, result) == "GaveUp"
     assert szs_status(problem, ProofResult("GaveUp")) == "GaveUp"
+
+
+QUESTIONS = {
+    # Only a Skolem term witnesses it: E answers [[esk1_0]|_].
+    "skolem": "fof(a, axiom, ? [X] : p(X)).\nfof(q, question, ? [Y] : p(Y)).",
+    # p(a) | p(b): E answers [([a]|[b])|_], a disjunction, no one binding.
+    "disjunctive": "cnf(a, axiom, p(a) | p(b)).\nfof(q, question, ? [X] : p(X)).",
+}
+
+
+@pytest.mark.parametrize("text", QUESTIONS.values(), ids=list(QUESTIONS))
+def test_a_theorem_without_a_definite_answer_binds_no_parameter(text: str) -> None:
+    # The TPTP side: the conjecture is a theorem, reported as E does, but without a
+    # tuple (ours gives definite answers only). The planner's side: no binding (III.A).
+    problem = parse_tptp(text)
+    assert prove_tptp(ResolutionProver(), problem, 100) == ("Theorem", None)
+    result = ResolutionProver().prove(problem.task(100, max_answers=3))
+    assert not result.proved and result.answers == ()
+
+
+def test_a_question_is_answered_definitely_or_refuted() -> None:
+    answered = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : p(X)).")
+    assert prove_tptp(ResolutionProver(), answered, 100) == ("Theorem", "[[a]|_]")
+    # No instance follows and the conjecture itself does not: the answer is "no".
+    false = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : r(X)).")
+    assert prove_tptp(ResolutionProver(), false, 100) == ("CounterSatisfiable", None)
 
 
 def test_several_conjectures_are_proved_together() -> None:

@@ -217,7 +217,7 @@ def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> Non
 
 
 def _prove(planner: Planner, args: argparse.Namespace) -> int:
-    from strips_framework.formats.tptp import load_tptp, szs_report
+    from strips_framework.formats.tptp import load_tptp, prove_tptp, szs_lines
 
     problem = load_tptp(args.problem)
     effort = args.effort if args.effort is not None else planner.config.limits.effort
@@ -226,8 +226,8 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
         # Another prover than the config's: with its own defaults, not the config's options.
         choices = {**config.choices, "prover": Choice("prover", args.prover)}
         config = attrs.evolve(config, choices=choices)
-    result = config.build(planner.registry, "prover").prove(problem.task(effort=effort))
-    print(szs_report(problem, result))
+    status, answers = prove_tptp(config.build(planner.registry, "prover"), problem, effort)
+    print(szs_lines(problem, status, answers))
     return 0
 
 

@@ -40,7 +40,14 @@ from strips_framework.logic.formulas import (
 )
 from strips_framework.logic.terms import EQUALITY, Param, Term
 from strips_framework.user_files import MAX_NESTING, read_text
-from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
+from strips_framework.worldmodel.proving import (
+    GAVE_UP,
+    PROVED,
+    SATURATED,
+    ProofResult,
+    ProofTask,
+    TheoremProver,
+)
 
 AXIOM_ROLES = frozenset(
     {"axiom", "hypothesis", "definition", "lemma", "theorem", "assumption", "plain", "unknown"}
@@ -392,12 +399,18 @@ class TptpProblem:
         return tuple(params)
 
     def task(
-        self, effort: int = 1000, *, max_answers: int = 1, unique_names: bool = False
+        self,
+        effort: int = 1000,
+        *,
+        max_answers: int = 1,
+        unique_names: bool = False,
+        answers: bool = True,
     ) -> ProofTask:
         """The proof task: negated goals are the set of support, the rest are axioms.
 
         Several conjectures are proved together (TPTP: their conjunction is the goal), so
-        their conjunction is negated as one formula.
+        their conjunction is negated as one formula. ``answers`` false keeps a question's
+        variables existential: the conjecture alone, without parameters to bind.
         """
         skolem = SkolemNames()
         axioms: list[Clause] = []
@@ -411,7 +424,7 @@ class TptpProblem:
                 (axioms if goals else support).extend(clauses)
         conjectures = [f for f in goals if f.role != "negated_conjecture"]
         if conjectures:
-            goal = And(_goal_body(f) for f in conjectures)
+            goal = And(_goal_body(f) if answers else _close(f.formula) for f in conjectures)
             label = ",".join(f.name for f in conjectures)
             support.extend(clausify(Not(goal), label=label, skolem=skolem))
         return ProofTask(
@@ -452,6 +465,26 @@ def szs_status(problem: TptpProblem, result: ProofResult) -> str:
     return GAVE_UP
 
 
+def prove_tptp(prover: TheoremProver, problem: TptpProblem, effort: int) -> tuple[str, str | None]:
+    """``problem`` posed to ``prover``: its SZS status and answer tuples (or ``None``).
+
+    A question is asked first with its variables as parameters, so its answers are the
+    definite ones a STRIPS planner may bind (paper, III.A). A TPTP user asks whether the
+    conjecture is a theorem, though, and E answers ``Theorem`` with a Skolem term or a
+    disjunction of tuples (``[([a]|[b])|_]``) where no definite answer exists; so when
+    the question is not answered, the conjecture alone (its variables existential) is
+    proved too, within the same effort again: ``Theorem`` with no answer tuple (ours
+    reports definite answers only), or ``CounterSatisfiable``. The planner never runs
+    that second attempt and never binds a parameter from it.
+    """
+    result = prover.prove(problem.task(effort))
+    if result.proved or not problem.question_variables:
+        return szs_status(problem, result), szs_answers(problem, result)
+    plain = prover.prove(problem.task(effort, answers=False))
+    status = {PROVED: "Theorem", SATURATED: "CounterSatisfiable"}.get(plain.status, GAVE_UP)
+    return status, None
+
+
 def _tptp_term(term: Term) -> str:
     if type(term) is tuple:
         return f"{term[0]}({','.join(_tptp_term(a) for a in term[1:])})"
@@ -473,8 +506,12 @@ def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
 
 def szs_report(problem: TptpProblem, result: ProofResult) -> str:
     """The lines a TPTP prover prints: the status and, for questions, the answers."""
-    lines = [f"% SZS status {szs_status(problem, result)} for {problem.name}"]
-    answers = szs_answers(problem, result)
+    return szs_lines(problem, szs_status(problem, result), szs_answers(problem, result))
+
+
+def szs_lines(problem: TptpProblem, status: str, answers: str | None) -> str:
+    """``% SZS status ...`` and, with answers, ``% SZS answers Tuple ...``."""
+    lines = [f"% SZS status {status} for {problem.name}"]
     if answers is not None:
         lines.append(f"% SZS answers Tuple {answers} for {problem.name}")
     return "\n".join(lines)

@@ -175,7 +175,9 @@ def _parse_term(tokens: list[str], pos: int, table: SymbolTable) -> tuple[Term |
 def parse_answers(lines: Iterable[str], table: SymbolTable) -> list[Answer]:
     """The bindings of E's ``# SZS answers Tuple [[t1, t2]|_]`` lines, in E's order;
     tuples with E's own Skolem symbols or variables inside terms are left out (a parameter
-    is never bound to those, paper III.A), a variable alone leaves its parameter open. A
+    is never bound to those, paper III.A), a variable alone leaves its parameter open, and
+    one that stands for two parameters (``[X, X]``: they must be equal) leaves the tuple
+    out too. A
     disjunctive answer, ``[([a]|[b])|_]`` (the goal holds for one of the tuples, which one
     is not known), binds nothing either: the paper's answers are definite."""
     params = list(table.params)
@@ -206,7 +208,14 @@ def _tuple(tokens: list[str], table: SymbolTable) -> list[Term | None]:
     """``[ [ t1 , t2 ] | _ ]``: the terms of the first (only) tuple."""
     pos = 2  # '[' '['
     values: list[Term | None] = []
+    open_values: set[str] = set()
     while tokens[pos] != "]":
+        head = tokens[pos]
+        if head[0].isupper() or head[0] == "_":
+            if head in open_values:
+                # [X, X]: the parameters must be equal, which no binding per parameter says.
+                raise _UnknownSymbol("a variable shared by two answers")
+            open_values.add(head)
         value, pos = _parse_term(tokens, pos, table)
         values.append(value)
         if tokens[pos] == ",":

@@ -60,16 +60,16 @@ def incompleteness(
             return "equality under a set of support"
         if unique_names:
             return "equality under unique names"
-        if any(_has_parameter(atom) for c in goal for _, atom in c.literals):
+        if any(has_parameter(atom) for c in goal for _, atom in c.literals):
             return "equality with parameters"
     if set_of_support and axioms and not _trivially_satisfiable(axioms):
         return "a set of support, with axioms not known to be satisfiable"
     return None
 
 
-def _has_parameter(term: Term) -> bool:
+def has_parameter(term: Term) -> bool:
     if type(term) is tuple:
-        return any(_has_parameter(arg) for arg in term[1:])
+        return any(has_parameter(arg) for arg in term[1:])
     return type(term) is Param
 
 

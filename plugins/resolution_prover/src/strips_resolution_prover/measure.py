@@ -24,7 +24,7 @@ import time
 from collections.abc import Iterator
 from pathlib import Path
 
-from strips_framework.formats.tptp import load_tptp, szs_answers, szs_status
+from strips_framework.formats.tptp import load_tptp, prove_tptp
 from strips_resolution_prover.prover import ResolutionProver
 
 
@@ -45,16 +45,12 @@ def run_ours(
     signal.signal(signal.SIGPROF, _alarm)
     signal.setitimer(signal.ITIMER_PROF, seconds)
     try:
-        result = prover.prove(problem.task(effort))
+        status, answers = prove_tptp(prover, problem, effort)
     except _OutOfTime:
         return "T/O", time.process_time() - start, ""
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0)
-    return (
-        szs_status(problem, result),
-        time.process_time() - start,
-        szs_answers(problem, result) or "",
-    )
+    return status, time.process_time() - start, answers or ""
 
 
 def run_e(path: Path, seconds: float) -> tuple[str, float]:

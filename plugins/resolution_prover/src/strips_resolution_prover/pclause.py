@@ -120,14 +120,19 @@ def term_weight(term: Term) -> int:
 def features_of(literals: tuple[Literal, ...]) -> frozenset[object]:
     """Features that a clause's instances keep, for subsumption's subset pre-filter.
 
-    A substitution only adds structure, and (multiset) subsumption maps literals one-to-one,
-    so a subsumer's features are a subset of the subsumed clause's: the k-th literal with a
-    (polarity, predicate) key, the symbol at the top of each argument position of each key,
-    and every constant, functor and parameter in the clause.
+    A substitution only adds structure, and (multiset) subsumption maps literals one-to-one
+    onto literals with the same (polarity, predicate) key, so a subsumer's features are a
+    subset of the subsumed clause's. E's feature vectors hold counts; a count ``n`` is
+    written here as the features ``(x, 1) .. (x, n)``, so that one frozenset comparison
+    (in C) tests every count at once:
+
+    - ``(key, k)``: at least ``k`` literals with that key;
+    - ``(key, position, symbol)``: a literal with that key has ``symbol`` on top there;
+    - ``(symbol, k)``: a constant, functor or parameter occurs at least ``k`` times;
+    - ``(key, "depth", k)``: a literal with that key has a term nested ``k`` deep.
     """
     found: set[object] = set()
-    counts: dict[tuple[bool, str, int], int] = {}
-    stack: list[Term] = []
+    counts: dict[object, int] = {}
     for positive, atom in literals:
         key = (positive, atom[0], len(atom))
         counts[key] = count = counts.get(key, 0) + 1
@@ -135,18 +140,34 @@ def features_of(literals: tuple[Literal, ...]) -> frozenset[object]:
         for position in range(1, len(atom)):
             arg = atom[position]
             kind = type(arg)
-            if kind is not int:
-                found.add((key, position, arg[0] if kind is tuple else arg))
-            stack.append(arg)
-    while stack:
-        term = stack.pop()
-        kind = type(term)
-        if kind is tuple:
-            found.add(term[0])
-            stack.extend(term[1:])
-        elif kind is not int:
-            found.add(term)
+            if kind is int:
+                continue
+            if kind is tuple:
+                found.add((key, position, arg[0]))
+                for k in range(1, _count_symbols(arg, counts, found) + 1):
+                    found.add((key, "depth", k))
+            else:
+                found.add((key, position, arg))
+                counts[arg] = count = counts.get(arg, 0) + 1
+                found.add((arg, count))
     return frozenset(found)
+
+
+def _count_symbols(term: tuple, counts: dict[object, int], found: set[object]) -> int:
+    """Count the symbols of a compound ``term`` into ``counts`` and ``found`` (as in
+    :func:`features_of`); its depth."""
+    symbol = term[0]
+    counts[symbol] = count = counts.get(symbol, 0) + 1
+    found.add((symbol, count))
+    deepest = 0
+    for arg in term[1:]:
+        kind = type(arg)
+        if kind is tuple:
+            deepest = max(deepest, _count_symbols(arg, counts, found))
+        elif kind is not int:
+            counts[arg] = count = counts.get(arg, 0) + 1
+            found.add((arg, count))
+    return deepest + 1
 
 
 def term_depth(term: Term) -> int:

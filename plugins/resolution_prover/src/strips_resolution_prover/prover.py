@@ -45,12 +45,13 @@ from strips_framework.worldmodel.proving import (
 )
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover.auto import (
+    SATURATION_SHARE,
     definite_facts,
     is_world_model,
     mentions_equality,
-    prove_automatically,
+    plan,
 )
-from strips_resolution_prover.completeness import incompleteness
+from strips_resolution_prover.completeness import has_parameter, incompleteness
 from strips_resolution_prover.demodulation import Demodulators
 from strips_resolution_prover.equality import (
     equality_factors,
@@ -81,10 +82,13 @@ from strips_resolution_prover.pclause import (
     term_depth,
 )
 from strips_resolution_prover.selection import ClauseQueue
-from strips_resolution_prover.subsumption import SubsumptionIndex
+from strips_resolution_prover.subsumption import MatchWork, SubsumptionIndex
 
 #: The values of ``goal_selection`` (see :class:`ResolutionProver`).
 GOAL_SELECTIONS = ("every", "fewest", "fewest-shared")
+#: Subsumption matcher steps (literal pairings tried) that count as one given clause of
+#: the effort bound: about the time a given clause's inferences take.
+MATCH_STEPS_PER_GIVEN = 1000
 
 
 @define(frozen=True)
@@ -345,6 +349,70 @@ class ResolutionSession:
         return attempt.run(effort, max_answers)
 
 
+def _attempt(options: ResolutionProver, task: ProofTask) -> _Saturation:
+    """A fresh attempt on ``task`` under one calculus (``options.schedule`` false)."""
+    axioms = _Axioms(options, InitialModel(()), task.unique_names, fresh=True)
+    return _Saturation(
+        options,
+        axioms,
+        set(),
+        task.axioms,
+        task.negated_goal,
+        unique_names=task.unique_names,
+        has_axioms=bool(task.axioms),
+    )
+
+
+def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResult:
+    """``task`` under the calculus :func:`.auto.plan` picks (see :mod:`.auto`)."""
+    sos = evolve(prover, schedule=False, set_of_support=True)
+    saturate = evolve(prover, schedule=False, set_of_support=False)
+    chosen = plan(task.axioms, task.negated_goal)
+    if chosen == "set-of-support":
+        return sos.prove(task)
+    if chosen == "saturation" or task.effort < 2:
+        return saturate.prove(task)
+    return interleave(task, saturate, sos)
+
+
+def interleave(task: ProofTask, saturate: ResolutionProver, sos: ResolutionProver) -> ProofResult:
+    """Saturation and the set of support on ``task`` side by side, as if run in parallel
+    with :data:`~.auto.SATURATION_SHARE` of the effort for saturation (see :mod:`.auto`).
+
+    Each attempt keeps its state, so interleaving loses no work: in round ``r`` of
+    ``task.effort`` rounds each has had ``r / task.effort`` of its share. The first that
+    decides answers, except that the set of support running out of clauses for a goal
+    with parameters only says it found no answer: saturation, which derives the ground
+    instances a parameter may take (III.A), then goes on with the rest of the effort.
+    One that gives up hands the effort it did not use to the other; if neither decides,
+    the set of support's result (its uncompleted proof is the difference) stands. The
+    effort used is the sum, so the run is as deterministic as each part.
+    """
+    effort = task.effort
+    share = max(1, min(effort - 1, int(effort * SATURATION_SHARE)))
+    attempts = [_attempt(saturate, task), _attempt(sos, task)]
+    bounds = [share, effort - share]
+    asks = any(has_parameter(atom) for c in task.negated_goal for _, atom in c.literals)
+    for attempt in attempts:
+        attempt.start(task.max_answers)
+    live = [0, 1]
+    for round_ in range(1, effort + 1):
+        for i in tuple(live):
+            attempt = attempts[i]
+            target = bounds[i] if len(live) == 1 else -(-round_ * bounds[i] // effort)
+            if not attempt.advance(target) and attempt.effort < bounds[i]:
+                continue
+            result = attempt.result()
+            if result.status == PROVED or (result.status == SATURATED and not (i and asks)):
+                return evolve(result, effort_used=sum(a.effort for a in attempts))
+            live.remove(i)
+            for other in live:
+                bounds[other] = effort - attempt.effort
+        if not live:
+            break
+    return evolve(attempts[1].result(), effort_used=sum(a.effort for a in attempts))
+
+
 class _Saturation:
     """The state of one proof attempt: the session's axioms, less ``hidden``, and a layer
     of its own for ``extra`` (the model's additions; with no set of support, every
@@ -402,10 +470,19 @@ class _Saturation:
             and not any(_positives(c) for c in negated_goal)
         )
         self._names: tuple[str, ...] | None = None
+        self.work = MatchWork()
+        self.given_clauses = 0
+        self.bound = 0
 
     # -- the loop -----------------------------------------------------------------------
 
     def run(self, effort_bound: int, max_answers: int) -> ProofResult:
+        self.start(max_answers)
+        self.advance(effort_bound)
+        return self.result()
+
+    def start(self, max_answers: int) -> None:
+        """Import the attempt's own axioms and the negated goal."""
         self.max_answers = max_answers
         for refutation in self.axioms.refutations:
             if refutation.id not in self.hidden:
@@ -422,23 +499,37 @@ class _Saturation:
             imported = from_clause(goal, sos=True)
             if imported is not None:
                 self._add_new(imported)
-        effort = 0
-        while not self._done() and effort < effort_bound:
+
+    def advance(self, effort_bound: int) -> bool:
+        """Pick given clauses until the effort reaches ``effort_bound``; whether the
+        attempt is over (enough answers, or nothing left to pick)."""
+        self.bound = effort_bound
+        while not self._done() and self.effort < effort_bound:
             given = self.queue.pop()
             if given is None:
-                break
+                return True
             if self._answered(given) or self._subsumed(given):
                 given.dead = True
                 continue
-            effort += 1
+            self.given_clauses += 1
             self._process(given)
-        return self._result(effort)
+        return self._done()
+
+    @property
+    def effort(self) -> int:
+        """Effort spent: given clauses, and subsumption matching at
+        :data:`MATCH_STEPS_PER_GIVEN` steps each, so that no part of the loop runs
+        unbounded while the count of given clauses stands still. The last given
+        clause's matching can carry it past the bound (by at most what
+        :data:`~.subsumption.MATCH_BUDGET` allows its tests); it is reported as the
+        bound, which a result's ``effort_used`` never exceeds."""
+        return min(self.bound, self.given_clauses + self.work.steps // MATCH_STEPS_PER_GIVEN)
 
     def _done(self) -> bool:
         return len(self.answers) >= self.max_answers
 
     def _process(self, given: PClause) -> None:
-        for victim in self.own.subsumption.subsumed_by(given):
+        for victim in self.own.subsumption.subsumed_by(given, self.work):
             victim.dead = True
             self.own.subsumption.note_deleted()
         self._retain(given)
@@ -527,8 +618,8 @@ class _Saturation:
 
     def _subsumed(self, clause: PClause) -> bool:
         return self.axioms.subsumption.is_subsumed(
-            clause, self.hidden
-        ) or self.own.subsumption.is_subsumed(clause)
+            clause, self.work, self.hidden
+        ) or self.own.subsumption.is_subsumed(clause, self.work)
 
     def _clause(self, cid: int) -> PClause:
         first = self.own.first_id
@@ -613,7 +704,8 @@ class _Saturation:
 
     # -- results ------------------------------------------------------------------------
 
-    def _result(self, effort: int) -> ProofResult:
+    def result(self) -> ProofResult:
+        effort = self.effort
         if self.answers:
             return ProofResult(
                 PROVED, answers=tuple(self.answers), effort_used=effort, proof=self._proof()

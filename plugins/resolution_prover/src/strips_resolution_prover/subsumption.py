@@ -4,14 +4,16 @@
 literals of ``D`` (multiset subsumption, as in E; it never deletes a clause in favour of
 its own factor) and ``C`` made no parameter binding that ``D`` did not also make (``C`` is
 then at least as general an answer). Since a substitution never lowers the weight of a
-term, ``C`` can only subsume ``D`` if it has no more literals, no more weight, and a subset
-of its (polarity, predicate) keys: those tests reject almost every candidate before any
-matching is tried (see :func:`~strips_resolution_prover.pclause.features_of`).
-"""
+term, ``C`` can only subsume ``D`` if it has no more literals, no more weight, and a
+subset of its features (literal counts per key, symbol counts, depths: see
+:func:`~strips_resolution_prover.pclause.features_of`): those tests reject almost every
+candidate before any matching is tried. The matcher (:func:`_match`) is bounded by
+:data:`MATCH_BUDGET` steps, which count into the attempt's effort."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from itertools import product
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
@@ -48,47 +50,150 @@ def match_term(pattern: Term, target: Term, subst: dict[int, Term]) -> bool:
     return pattern == target
 
 
-def _match_all(
-    pattern: tuple[Literal, ...],
-    i: int,
-    target: tuple[Literal, ...],
-    used: list[bool],
-    subst: dict[int, Term],
-) -> bool:
-    if i == len(pattern):
-        return True
-    positive, atom = pattern[i]
+#: Matcher steps (a literal pairing tried) one subsumption test may take before it
+#: answers "not shown subsumed". Multi-literal subsumption is NP-complete, and clauses
+#: such as ``~R(f(c),X0) | ... | ~R(f(c),X7) | ...`` make plain backtracking try every
+#: injective mapping (case 512 of the differential run took minutes). Keeping a clause
+#: is always sound and never loses completeness, so the bound costs only redundancy.
+MATCH_BUDGET = 5000
+
+
+class MatchWork:
+    """Matcher steps an attempt spent, so that subsumption counts into its effort."""
+
+    __slots__ = ("steps",)
+
+    def __init__(self) -> None:
+        self.steps = 0
+
+
+class _OutOfSteps(Exception):
+    pass
+
+
+#: A pattern literal's matches: (target literal index, the bindings of its variables).
+Candidates = list[tuple[int, dict[int, Term]]]
+
+
+def _candidates(literal: Literal, target: tuple[Literal, ...]) -> Candidates:
+    positive, atom = literal
+    found: Candidates = []
     for j, (target_positive, target_atom) in enumerate(target):
-        if used[j] or target_positive is not positive or target_atom[0] != atom[0]:
-            continue
-        extended = dict(subst)
-        if not match_term(atom, target_atom, extended):
-            continue
-        used[j] = True
-        if _match_all(pattern, i + 1, target, used, extended):
-            return True
-        used[j] = False
-    return False
+        if target_positive is positive and target_atom[0] == atom[0]:
+            subst: dict[int, Term] = {}
+            if match_term(atom, target_atom, subst):
+                found.append((j, subst))
+    return found
 
 
-def subsumes(c: PClause, d: PClause) -> bool:
-    """Whether ``c`` subsumes ``d`` (see the module docstring)."""
+def _assignable(options: list[Candidates], used: list[bool]) -> bool:
+    """Whether each option list gets its own unused target literal (a bipartite
+    matching, by augmenting paths): the one-to-one condition without the substitution,
+    exact for literals that share no variable with the rest of the pattern."""
+    owner: dict[int, int] = {}
+
+    def augment(i: int, seen: set[int]) -> bool:
+        for j, _ in options[i]:
+            if used[j] or j in seen:
+                continue
+            seen.add(j)
+            if j not in owner or augment(owner[j], seen):
+                owner[j] = i
+                return True
+        return False
+
+    return all(augment(i, set()) for i in range(len(options)))
+
+
+def _match(pattern: tuple[Literal, ...], target: tuple[Literal, ...], work: MatchWork) -> bool:
+    """Multiset matching of ``pattern`` onto ``target``, as Vampire's and E's matchers do
+    it: each pattern literal's matches are found on its own first (a literal with none
+    ends the test), the literals whose variables occur elsewhere in the pattern are
+    assigned by backtracking, most constrained first, and the rest, independent of the
+    substitution, by a bipartite matching at each leaf."""
+    work.steps += len(pattern) * len(target)
+    if len(pattern) == 1:  # a unit: any one match (backward subsumption by unit givens)
+        positive, atom = pattern[0]
+        return any(
+            target_positive is positive and match_term(atom, target_atom, {})
+            for target_positive, target_atom in target
+        )
+    options: list[Candidates] = []
+    for literal in pattern:
+        found = _candidates(literal, target)
+        if not found:
+            return False
+        options.append(found)
+    used = [False] * len(target)
+    occurrences: dict[int, int] = {}
+    for found in options:
+        for var in found[0][1]:
+            occurrences[var] = occurrences.get(var, 0) + 1
+    linked = sorted(
+        (found for found in options if any(occurrences[v] > 1 for v in found[0][1])), key=len
+    )
+    if not linked:
+        return True
+    free = [found for found in options if all(occurrences[v] == 1 for v in found[0][1])]
+    budget = work.steps + MATCH_BUDGET
+
+    def assign(i: int, subst: dict[int, Term]) -> bool:
+        if i == len(linked):
+            return not free or _assignable(free, used)
+        for j, bindings in linked[i]:
+            work.steps += 1
+            if work.steps > budget:
+                raise _OutOfSteps
+            if used[j] or any(subst.get(v, t) != t for v, t in bindings.items()):
+                continue
+            used[j] = True
+            if assign(i + 1, {**subst, **bindings}):
+                return True
+            used[j] = False
+        return False
+
+    try:
+        return assign(0, {})
+    except _OutOfSteps:
+        return False
+
+
+def subsumes(c: PClause, d: PClause, work: MatchWork | None = None) -> bool:
+    """Whether ``c`` is shown to subsume ``d`` (see the module docstring) within
+    :data:`MATCH_BUDGET` steps, counted in ``work``."""
     if not _may_subsume(c, d):
         return False
-    return _match_all(c.literals, 0, d.literals, [False] * len(d.literals), {})
+    return _match(c.literals, d.literals, MatchWork() if work is None else work)
+
+
+#: How many leading argument positions key a non-ground unit by their top symbols (E's
+#: fingerprint indexing samples positions the same way); a literal is looked up under at
+#: most 2**k keys, one per choice of its symbol or "a variable" at each position.
+UNIT_KEY_POSITIONS = 3
+
+
+def _tops(atom: tuple) -> tuple[object, ...]:
+    """The top symbols of the first :data:`UNIT_KEY_POSITIONS` arguments, ``None`` for a
+    variable."""
+    tops: list[object] = []
+    for arg in atom[1 : 1 + UNIT_KEY_POSITIONS]:
+        kind = type(arg)
+        tops.append(arg[0] if kind is tuple else None if kind is int else arg)
+    return tuple(tops)
 
 
 def _unit_key(positive: bool, atom: tuple) -> tuple[object, ...]:
-    """A unit's index key: its predicate key and the top symbol of its first argument
-    (``None`` for a variable or no argument); a unit can only match a literal whose key is
-    the same or has a variable there."""
-    top = atom[1] if len(atom) > 1 else None
-    kind = type(top)
-    if kind is tuple:
-        top = top[0]
-    elif kind is int:
-        top = None
-    return positive, atom[0], len(atom), top
+    """A unit's index key: its predicate key and its :func:`_tops`."""
+    return positive, atom[0], len(atom), _tops(atom)
+
+
+def _generalization_keys(positive: bool, atom: tuple) -> Iterator[tuple[object, ...]]:
+    """The keys of the units that may match ``atom``: at each position its own top symbol
+    or a variable (a symbol of the unit never matches a variable of the target, which
+    stands for itself here)."""
+    choices = [(top,) if top is None else (top, None) for top in _tops(atom)]
+    for tops in product(*choices):
+        yield positive, atom[0], len(atom), tops
 
 
 def _is_ground(term: Term) -> bool:
@@ -107,7 +212,8 @@ class SubsumptionIndex:
     - Ground units are kept in a hash table by literal: a ground unit subsumes exactly the
       clauses containing its literal, so the check is one lookup per literal. World models
       are mostly ground facts, so this is where STRIPS's checks end.
-    - Other units are filed by :func:`_unit_key`.
+    - Other units are filed by :func:`_unit_key` (the top symbols of their leading
+      arguments) and found under :func:`_generalization_keys`.
     - Longer clauses are filed under the key of their first literal and their first
       parameter binding (``None`` if they made none): a subsumer's keys and bindings are
       subsets of the subsumed clause's, so forward subsumption of ``d`` only looks at the
@@ -158,8 +264,7 @@ class SubsumptionIndex:
         if not self._units:
             return False
         for positive, atom in d.literals:
-            key = _unit_key(positive, atom)
-            for unit_key in (key, key[:3] + (None,)) if key[3] is not None else (key,):
+            for unit_key in _generalization_keys(positive, atom):
                 for unit in self._units.get(unit_key, ()):
                     if (
                         not unit.dead
@@ -170,7 +275,9 @@ class SubsumptionIndex:
                         return True
         return False
 
-    def is_subsumed(self, d: PClause, hidden: AbstractSet[int] = frozenset()) -> bool:
+    def is_subsumed(
+        self, d: PClause, work: MatchWork, hidden: AbstractSet[int] = frozenset()
+    ) -> bool:
         if self.is_subsumed_by_unit(d, hidden):
             return True
         if len(d.literals) < 2:
@@ -179,11 +286,11 @@ class SubsumptionIndex:
         for key in d.keyset:
             for binding in bindings:
                 for c in self._by_first_key.get((*key, binding), ()):
-                    if not c.dead and c.id not in hidden and subsumes(c, d):
+                    if not c.dead and c.id not in hidden and subsumes(c, d, work):
                         return True
         return False
 
-    def subsumed_by(self, c: PClause) -> Iterator[PClause]:
+    def subsumed_by(self, c: PClause, work: MatchWork) -> Iterator[PClause]:
         """Live deletable clauses other than ``c`` that ``c`` subsumes, in the order they
         were added."""
         if not c.literals:
@@ -191,7 +298,7 @@ class SubsumptionIndex:
         lists = [self._by_key.get(key, []) for key in (*c.keyset, *c.bindings)]
         candidates = min(lists, key=len)
         for d in candidates:
-            if d is not c and not d.dead and subsumes(c, d):
+            if d is not c and not d.dead and subsumes(c, d, work):
                 yield d
 
     def note_deleted(self) -> None:
