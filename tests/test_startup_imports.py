@@ -37,6 +37,11 @@ NOT_NEEDED = (
     "importlib.metadata",
     "tempfile",
     "json",
+    # attrs: importing it (inspect, ast, dis) and building its classes cost more than a
+    # small task's whole solve; the PDDL path declares options with
+    # strips_framework.options and its records as NamedTuples and slotted classes.
+    "attr",
+    "attrs",
 )
 
 

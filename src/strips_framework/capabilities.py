@@ -18,8 +18,7 @@ keep them consistent.
 from __future__ import annotations
 
 from collections.abc import Iterable
-
-from attrs import frozen
+from typing import NamedTuple
 
 from strips_framework.errors import PluginError
 
@@ -79,8 +78,7 @@ VOCABULARY: dict[str, dict[str, str]] = {
 }
 
 
-@frozen
-class Requirement:
+class Requirement(NamedTuple):
     """A capability that the chosen implementation of ``kind`` must declare.
 
     ``reason`` completes "needs a prover with 'answers' ..." in messages; ``strict=False``

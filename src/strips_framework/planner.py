@@ -14,10 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
-
-import attrs
-from attrs import frozen
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
@@ -39,8 +36,7 @@ if TYPE_CHECKING:
 GROUND_STRATEGY = "ground-strategy"
 
 
-@frozen
-class Planner:
+class Planner(NamedTuple):
     """A checked config and the registry its components come from.
 
     Make one with :meth:`create`; :meth:`run` reads and solves a file, :meth:`solve` a
@@ -175,13 +171,12 @@ class Planner:
 
             macrops = _read_library(library, to_problem(pddl))
             result = solve_with_macros(self, task, macrops, clock)
-        statistics = attrs.evolve(
-            result.statistics,
+        statistics = result.statistics._replace(
             parse_seconds=parse_seconds,
             ground_seconds=searching_since - grounding_since,
             search_seconds=clock.elapsed() - searching_since,  # the heuristic's set-up included
         )
-        return attrs.evolve(result, statistics=statistics, seconds=clock.elapsed())
+        return result._replace(statistics=statistics, seconds=clock.elapsed())
 
     def solve(
         self, problem: Problem, clock: Clock | None = None, library: Library | None = None

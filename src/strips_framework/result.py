@@ -11,9 +11,7 @@ over ground tasks) count different things, so each keeps its own statistics reco
 from __future__ import annotations
 
 import enum
-from typing import TYPE_CHECKING, ClassVar, Protocol
-
-from attrs import frozen
+from typing import TYPE_CHECKING, ClassVar, NamedTuple, Protocol
 
 if TYPE_CHECKING:
     from strips_framework.means_ends.result import Tree
@@ -69,8 +67,7 @@ class FamilyStatistics(Protocol):
         ...
 
 
-@frozen
-class Result:
+class Result(NamedTuple):
     """One search's outcome.
 
     ``plan`` holds the steps in IPC form, ``(name arg ...)``, when ``status`` is SOLVED;

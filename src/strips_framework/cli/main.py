@@ -9,8 +9,7 @@ import sys
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
-
-import attrs
+from typing import TYPE_CHECKING
 
 from strips_framework import __version__
 from strips_framework.bench import command as bench_command
@@ -23,9 +22,11 @@ from strips_framework.pddl.files import is_pddl
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Choice, Config
 from strips_framework.plugin.registry import KINDS, Registration
-from strips_framework.progress import Progress
 from strips_framework.result import Result, Status
 from strips_framework.user_files import check_writable, write_atomically
+
+if TYPE_CHECKING:
+    from strips_framework.progress import Progress
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -170,10 +171,14 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
             check_writable(path, what)  # before the search, not after it
     clock = Clock(planner.config.limits.time)
     result: Result | None = None
-    progress = Progress(sys.stderr) if sys.stderr.isatty() else None
+    progress: Progress | None = None
+    if sys.stderr.isatty():  # the progress line's module (and threading) only then
+        from strips_framework.progress import Progress
+
+        progress = Progress(sys.stderr)
     try:
         with enforced(planner.config.limits), progress or contextlib.nullcontext():
-            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock, args.macrops)
+            result = planner._replace(progress=progress).run(problem, domain, clock, args.macrops)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
         status = limit.status
     except MemoryError:
@@ -225,7 +230,7 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
     if args.prover is not None and args.prover != config.choices["prover"].name:
         # Another prover than the config's: with its own defaults, not the config's options.
         choices = {**config.choices, "prover": Choice("prover", args.prover)}
-        config = attrs.evolve(config, choices=choices)
+        config = config._replace(choices=choices)
     result = config.build(planner.registry, "prover").prove(problem.task(effort=effort))
     print(szs_report(problem, result))
     return 0

@@ -3,19 +3,16 @@ the counts Fast Downward reports."""
 
 from __future__ import annotations
 
-from typing import ClassVar
-
-from attrs import frozen
+from typing import NamedTuple
 
 
-@frozen
-class ForwardStatistics:
+class ForwardStatistics(NamedTuple):
     """Counts as Fast Downward reports them: ``expanded`` states (successors generated),
     ``evaluated`` heuristic calls, ``generated`` successor states, ``reopened`` closed
     states reached again more cheaply; ``dead_ends`` states the heuristic proved hopeless.
     Times are wall-clock seconds; ``peak_memory_mib`` is the process's peak resident set."""
 
-    family: ClassVar[str] = "forward"
+    family = "forward"  # a class attribute, not a field (FamilyStatistics.family)
 
     expanded: int = 0
     evaluated: int = 0

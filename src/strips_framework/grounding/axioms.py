@@ -8,20 +8,18 @@ are final by the time their stratum's axioms run (negation as failure is sound).
 
 from __future__ import annotations
 
-from attrs import frozen
+from typing import NamedTuple
 
 from strips_framework.grounding.task import GroundTask, mask_of
 
 
-@frozen
-class _Rule:
+class _Rule(NamedTuple):
     head: int
     body_mask: int
     neg_mask: int
 
 
-@frozen
-class _Stratum:
+class _Stratum(NamedTuple):
     rules: tuple[_Rule, ...]
     #: For a fact derived in this stratum, the rules whose body contains it.
     watching: dict[int, tuple[_Rule, ...]]

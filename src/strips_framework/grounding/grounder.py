@@ -19,8 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from operator import itemgetter
-
-from attrs import evolve, frozen
+from typing import NamedTuple
 
 from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
@@ -42,8 +41,7 @@ Fact = tuple[str, Args]
 Pattern = tuple[dict[Args, int], Callable[[Args], Args]]
 
 
-@frozen
-class _Source:
+class _Source(NamedTuple):
     """What a reachability rule stands for: an action, one of its conditional effects,
     or the head of an axiom."""
 
@@ -200,7 +198,7 @@ class _Grounder:
             ),
             uses_costs=self.task.problem.minimize_cost,
         )
-        return evolve(task, init=AxiomEvaluator(task).evaluate(task.init))
+        return task._replace(init=AxiomEvaluator(task).evaluate(task.init))
 
     def _records(
         self, reach: Reachability, number: dict[Fact, int]

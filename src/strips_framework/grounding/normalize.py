@@ -13,8 +13,7 @@ all with the action's IPC name.
 from __future__ import annotations
 
 from itertools import product
-
-from attrs import frozen
+from typing import NamedTuple
 
 from strips_framework.pddl.formulas import (
     And,
@@ -30,8 +29,7 @@ from strips_framework.pddl.formulas import (
 from strips_framework.pddl.task import DerivedPredicate, PddlTask
 
 
-@frozen
-class Clause:
+class Clause(NamedTuple):
     """A conjunction of literals over the outer variables plus its own ``params``."""
 
     params: tuple[Parameter, ...] = ()

@@ -18,8 +18,7 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Iterable
-
-from attrs import frozen
+from typing import NamedTuple
 
 from strips_framework.pddl.formulas import Atom
 
@@ -48,8 +47,7 @@ class FactIndex:
         return index.get(key, [])
 
 
-@frozen
-class Rule:
+class Rule(NamedTuple):
     """``heads`` become reachable for every binding of ``params`` (each ranging over
     ``domains``, the objects of its type) that makes the atoms of ``body`` reachable,
     leaves the static atoms of ``absent`` false, and satisfies the ``equal`` and
@@ -84,8 +82,7 @@ class Slots:
         return tuple(self.number[arg] for arg in args)
 
 
-@frozen
-class _Step:
+class _Step(NamedTuple):
     """Match ``facts`` on the ``key`` slots at ``positions``; each entry of ``free`` is
     ``(position, slot, domain, compare)``: bind the slot (checking the domain unless it is
     None) or, when ``compare``, test that it holds the value already bound."""
@@ -96,8 +93,7 @@ class _Step:
     free: tuple[tuple[int, int, frozenset[str] | None, bool], ...]
 
 
-@frozen
-class _Plan:
+class _Plan(NamedTuple):
     """A way to complete a rule's binding: join ``steps``, then enumerate ``rest``."""
 
     rule: int
@@ -106,8 +102,7 @@ class _Plan:
     rest: tuple[tuple[int, tuple[str, ...]], ...]
 
 
-@frozen
-class _Final:
+class _Final(NamedTuple):
     """The tests and outputs of a rule once its binding is complete, as slot numbers."""
 
     params: int

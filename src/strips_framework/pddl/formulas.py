@@ -2,23 +2,46 @@
 
 Terms are plain strings: a variable starts with ``?``, anything else is an object (a
 constant). Equality is an :class:`Atom` with predicate ``=``. ``(and)`` is truth.
+
+Each node is a :class:`~typing.NamedTuple` (built in microseconds, where an attrs class
+costs a compile of its methods at every start-up). A tuple equals any tuple of the same
+items, so the connectives, whose shapes coincide (``(and)`` and ``(or)``, ``exists`` and
+``forall``), compare and hash by their type too (:func:`_typed_equality`).
 """
 
 from __future__ import annotations
 
-from attrs import frozen
+from typing import NamedTuple
 
 
-@frozen
-class Parameter:
+def _eq(self: tuple, other: object) -> bool:
+    return type(other) is type(self) and tuple.__eq__(self, other)  # type: ignore[arg-type]
+
+
+def _ne(self: tuple, other: object) -> bool:
+    return not _eq(self, other)
+
+
+def _hash(self: tuple) -> int:
+    return hash((type(self).__name__, tuple.__hash__(self)))
+
+
+def _typed_equality(cls: type) -> type:
+    """``cls`` (a NamedTuple) equal only to values of its own type."""
+    cls.__eq__ = _eq  # type: ignore[method-assign,assignment]
+    cls.__ne__ = _ne  # type: ignore[method-assign,assignment]
+    cls.__hash__ = _hash  # type: ignore[method-assign,assignment]
+    return cls
+
+
+class Parameter(NamedTuple):
     """A typed variable or object; ``types`` has more than one entry for ``(either ...)``."""
 
     name: str
     types: tuple[str, ...] = ("object",)
 
 
-@frozen
-class Atom:
+class Atom(NamedTuple):
     """``(predicate arg ...)``; also a numeric function application ``(f arg ...)``."""
 
     predicate: str
@@ -28,35 +51,35 @@ class Atom:
         return "(" + " ".join((self.predicate, *self.args)) + ")"
 
 
-@frozen
-class Not:
+@_typed_equality
+class Not(NamedTuple):
     part: Formula
 
 
-@frozen
-class And:
+@_typed_equality
+class And(NamedTuple):
     parts: tuple[Formula, ...]
 
 
-@frozen
-class Or:
+@_typed_equality
+class Or(NamedTuple):
     parts: tuple[Formula, ...]
 
 
-@frozen
-class Imply:
+@_typed_equality
+class Imply(NamedTuple):
     condition: Formula
     consequence: Formula
 
 
-@frozen
-class Exists:
+@_typed_equality
+class Exists(NamedTuple):
     params: tuple[Parameter, ...]
     body: Formula
 
 
-@frozen
-class Forall:
+@_typed_equality
+class Forall(NamedTuple):
     params: tuple[Parameter, ...]
     body: Formula
 

@@ -4,8 +4,7 @@ later step (grounding, validation, translation to a framework problem) needs."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-
-from attrs import field, frozen
+from typing import NamedTuple
 
 from strips_framework.errors import InputError
 from strips_framework.pddl.formulas import Atom, Formula, Parameter
@@ -14,14 +13,12 @@ from strips_framework.pddl.formulas import Atom, Formula, Parameter
 Cost = int | Atom
 
 
-@frozen
-class Predicate:
+class Predicate(NamedTuple):
     name: str
     params: tuple[Parameter, ...]
 
 
-@frozen
-class ConditionalEffect:
+class ConditionalEffect(NamedTuple):
     """``(forall (params) (when condition effect))``: for every binding of ``params`` to
     objects under which ``condition`` holds in the state the action is applied in, the
     ``add`` atoms become true and the ``delete`` atoms false. A universal effect without
@@ -33,8 +30,7 @@ class ConditionalEffect:
     delete: tuple[Atom, ...]
 
 
-@frozen
-class Action:
+class Action(NamedTuple):
     """A lifted action: the unconditional STRIPS add/delete effects, the conditional and
     universal ones (``when``, ``forall``), and an optional ``total-cost`` increase. All
     conditions are evaluated in the state before the action; deletes apply before adds."""
@@ -57,8 +53,7 @@ class Action:
             yield from effect.delete
 
 
-@frozen
-class DerivedPredicate:
+class DerivedPredicate(NamedTuple):
     """``(:derived (head ?x ...) body)``: the head holds exactly when the body does."""
 
     head: Atom
@@ -66,8 +61,7 @@ class DerivedPredicate:
     body: Formula
 
 
-@frozen
-class Domain:
+class Domain(NamedTuple):
     name: str
     requirements: tuple[str, ...]
     #: ``(type, parent)`` pairs; ``object`` is the root and needs no entry.
@@ -79,8 +73,7 @@ class Domain:
     derived: tuple[DerivedPredicate, ...]
 
 
-@frozen
-class Problem:
+class Problem(NamedTuple):
     name: str
     domain_name: str
     objects: tuple[Parameter, ...]
@@ -118,20 +111,32 @@ def _objects_by_type(domain: Domain, problem: Problem) -> dict[str, tuple[str, .
     return {kind: tuple(sorted(names)) for kind, names in members.items()}
 
 
-@frozen
 class PddlTask:
     """A domain and a problem, with the files they came from (for messages)."""
 
-    domain: Domain
-    problem: Problem
-    domain_path: str = ""
-    problem_path: str = ""
-    #: Every type's objects (including subtypes' objects), sorted.
-    objects_by_type: dict[str, tuple[str, ...]] = field(init=False, eq=False, repr=False)
+    __slots__ = ("domain", "problem", "domain_path", "problem_path", "objects_by_type")
 
-    @objects_by_type.default
-    def _objects_by_type_default(self) -> dict[str, tuple[str, ...]]:
-        return _objects_by_type(self.domain, self.problem)
+    def __init__(
+        self, domain: Domain, problem: Problem, domain_path: str = "", problem_path: str = ""
+    ) -> None:
+        self.domain = domain
+        self.problem = problem
+        self.domain_path = domain_path
+        self.problem_path = problem_path
+        #: Every type's objects (including subtypes' objects), sorted.
+        self.objects_by_type = _objects_by_type(domain, problem)
+
+    def _key(self) -> tuple[Domain, Problem, str, str]:
+        return (self.domain, self.problem, self.domain_path, self.problem_path)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, PddlTask) and other._key() == self._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def __repr__(self) -> str:
+        return f"PddlTask({self.name!r}, {self.domain_path!r}, {self.problem_path!r})"
 
     def objects_of(self, types: tuple[str, ...]) -> tuple[str, ...]:
         """The objects of any of ``types`` (one type, or the members of ``(either ...)``)."""

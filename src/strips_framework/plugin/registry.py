@@ -15,14 +15,13 @@ from __future__ import annotations
 
 import importlib
 import os
-import traceback
 import warnings
 from collections.abc import Iterable
+from typing import NamedTuple
 
-import attrs
 import pluggy
-from attrs import frozen
 
+from strips_framework import options
 from strips_framework.errors import PluginError
 from strips_framework.plugin import entry_points, hookspecs
 
@@ -116,8 +115,7 @@ def get_plugin_manager(
     return manager
 
 
-@frozen
-class Registration:
+class Registration(NamedTuple):
     """One implementation class and where it came from."""
 
     kind: str
@@ -127,17 +125,9 @@ class Registration:
     distribution: str | None
 
     def options(self) -> list[tuple[str, object]]:
-        """The class's options (its attrs init fields) with their default values."""
-        if not attrs.has(self.cls):
-            return []
-        options = []
-        for field in attrs.fields(self.cls):
-            if field.init:
-                default = field.default
-                if isinstance(default, attrs.Factory):  # type: ignore[arg-type]
-                    default = default.factory()
-                options.append((field.name, default))
-        return options
+        """The class's options (:func:`strips_framework.options.declared_options`) with their
+        default values."""
+        return list(options.declared_options(self.cls).items())
 
     @property
     def suffixes(self) -> tuple[str, ...]:
@@ -195,6 +185,8 @@ class Registry:
         the innermost frame of the traceback that is a method of a registered class from
         outside the core, or code in the module that defines one (a heuristic's estimator
         beside its heuristic). ``None`` for errors in the core's own code."""
+        import traceback  # only on the way to an error message
+
         plugged = [
             registration
             for found in self._by_kind.values()

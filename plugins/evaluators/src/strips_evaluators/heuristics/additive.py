@@ -8,18 +8,17 @@ informative for greedy search, not admissible.
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 
-@frozen
-class AdditiveEstimator:
+class AdditiveEstimator(NamedTuple):
     explorer: Explorer
     goal_mask: int
 
@@ -32,8 +31,7 @@ class AdditiveEstimator:
         return self.estimate(state), ()
 
 
-@frozen
-class AdditiveHeuristic:
+class AdditiveHeuristic(Configurable):
     """hadd: the sum of the goal facts' relaxed costs. Not admissible.
 
     Each fact costs its cheapest achiever's cost plus the sum of its preconditions'

@@ -3,15 +3,14 @@
 from __future__ import annotations
 
 import math
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-from attrs import frozen
 
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 
-@frozen
-class BlindEstimator:
+class BlindEstimator(NamedTuple):
     goal_mask: int
     #: What any step from a non-goal state costs at least (``math.inf`` with no operators).
     min_cost: float
@@ -23,8 +22,7 @@ class BlindEstimator:
         return self.estimate(state), ()
 
 
-@frozen
-class BlindHeuristic:
+class BlindHeuristic(Configurable):
     """Blind: 0 at a goal, else the cheapest operator's cost. Admissible, no guidance.
 
     A non-goal state needs at least one more step, so the cheapest operator's cost (1 on

@@ -11,19 +11,18 @@ they start a relaxed plan, so they are the moves most likely to make progress (F
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 
-@frozen
-class FFEstimator:
+class FFEstimator(NamedTuple):
     explorer: Explorer
     goal_mask: int
 
@@ -38,8 +37,7 @@ class FFEstimator:
         return self.explorer.preferred(state)
 
 
-@frozen
-class FFHeuristic:
+class FFHeuristic(Configurable):
     """hFF: cost of a relaxed plan from hadd best supporters; preferred operators.
 
     As Fast Downward's ``ff()``: each operator of the relaxed plan counts once, so it is

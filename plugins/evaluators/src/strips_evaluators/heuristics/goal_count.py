@@ -2,15 +2,14 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-from attrs import frozen
 
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 
-@frozen
-class GoalCountEstimator:
+class GoalCountEstimator(NamedTuple):
     goal_mask: int
 
     def estimate(self, state: int) -> float:
@@ -20,8 +19,7 @@ class GoalCountEstimator:
         return (self.goal_mask & ~state).bit_count(), ()
 
 
-@frozen
-class GoalCountHeuristic:
+class GoalCountHeuristic(Configurable):
     """Goal count: the goal facts false in the state. Not admissible.
 
     One bit count per state, so the cheapest informed heuristic. It overestimates when one

@@ -8,18 +8,17 @@ operators at least that expensive, so hmax is admissible (and consistent).
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 
-@frozen
-class MaxEstimator:
+class MaxEstimator(NamedTuple):
     explorer: Explorer
     goal_mask: int
 
@@ -32,8 +31,7 @@ class MaxEstimator:
         return self.estimate(state), ()
 
 
-@frozen
-class MaxHeuristic:
+class MaxHeuristic(Configurable):
     """hmax: the costliest goal fact in the delete relaxation. Admissible.
 
     Each fact costs its cheapest achiever's cost plus the achiever's costliest

@@ -18,14 +18,13 @@ landmark achieved earlier is required again.
 
 from __future__ import annotations
 
-from attrs import frozen
+from typing import NamedTuple
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in
 from strips_framework.grounding.task import mask_of
 
 
-@frozen
-class LandmarkGraph:
+class LandmarkGraph(NamedTuple):
     """Landmarks of a task from its initial state, as bitsets over fact numbers."""
 
     #: The landmarks (artificial and derived facts left out: no operator achieves them).

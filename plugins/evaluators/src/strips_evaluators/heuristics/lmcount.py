@@ -17,18 +17,17 @@ can achieve several landmarks.
 from __future__ import annotations
 
 import math
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
 from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in, relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 
-@frozen
-class LandmarkCountEstimator:
+class LandmarkCountEstimator(NamedTuple):
     graph: LandmarkGraph
     goal_mask: int
     #: Facts whose label holds a landmark: the ones worth looking at in a state.
@@ -86,8 +85,7 @@ class LandmarkCountEstimator:
         return sum(weight[fact] for fact in facts_in(counted)), missing, again
 
 
-@frozen
-class LandmarkCountHeuristic:
+class LandmarkCountHeuristic(Configurable):
     """lmcount: landmarks still to reach or required again; preferred operators.
 
     Landmarks are Zhu & Givan's, from the initial state; each weighs its cheapest

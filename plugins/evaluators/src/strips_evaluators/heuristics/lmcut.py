@@ -29,22 +29,20 @@ from __future__ import annotations
 
 import math
 from heapq import heappop, heappush
-from typing import ClassVar
+from typing import ClassVar, NamedTuple
 
-import attrs
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import max_exploration
 from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in, relax
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
 
 NO_SUPPORTER = -1
 #: ``only_effect`` entry of an operator with several add effects.
 MANY_EFFECTS = -1
 
 
-@frozen
-class LMCutEstimator:
+class LMCutEstimator(NamedTuple):
     """``relaxed`` ends with the artificial goal operator, which adds ``goal_fact``."""
 
     relaxed: RelaxedTask
@@ -231,8 +229,7 @@ class LMCutEstimator:
                         lowered.append((best_cost + op_cost[op], add[op]))
 
 
-@frozen
-class LMCutHeuristic:
+class LMCutHeuristic(Configurable):
     """LM-cut (Helmert & Domshlak 2009): sum of cost-disjoint landmark costs. Admissible.
 
     The action landmarks are found by repeated hmax cuts. Always >= hmax, and the
@@ -249,8 +246,7 @@ class LMCutHeuristic:
         pre_of = [ops[:] for ops in relaxed.pre_of]
         for fact in relaxed.goal:
             pre_of[fact].append(goal_op)
-        relaxed = attrs.evolve(
-            relaxed,
+        relaxed = relaxed._replace(
             pre=[*relaxed.pre, relaxed.goal],
             add=[*relaxed.add, (goal_fact,)],
             cost=[*relaxed.cost, 0],

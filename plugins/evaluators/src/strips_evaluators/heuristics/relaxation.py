@@ -18,8 +18,7 @@ need no special case for them.
 from __future__ import annotations
 
 import math
-
-from attrs import frozen
+from typing import NamedTuple
 
 from strips_evaluators.heuristics.factoring import factor_shared_pairs
 from strips_framework.grounding.task import GroundTask
@@ -30,8 +29,7 @@ AXIOM = -1
 CONJUNCTION = -2
 
 
-@frozen
-class RelaxedTask:
+class RelaxedTask(NamedTuple):
     """Relaxed operators ``0..len(pre)-1``: real operators with add effects and their
     conditional effects with adds (in task order), then axioms. Operators without add
     effects are left out: they reach nothing."""
