@@ -8,7 +8,8 @@ from strips_framework.errors import ConfigError
 from strips_framework.means_ends.strategy import MeansEndsSearch
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Config
-from strips_framework.plugin.registry import Registry, get_plugin_manager
+from strips_framework.plugin.manager import get_plugin_manager
+from strips_framework.plugin.registry import Registry
 
 
 @pytest.fixture(scope="module")
