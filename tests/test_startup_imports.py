@@ -39,7 +39,7 @@ NOT_NEEDED = (
     "json",
     # attrs: importing it (inspect, ast, dis) and building its classes cost more than a
     # small task's whole solve; the PDDL path declares options with
-    # strips_framework.options and its records as NamedTuples and slotted classes.
+    # strips_framework.options and its records as strips_framework.records classes.
     "attr",
     "attrs",
     # The registry comes from its cache (plugin/registry_cache.py) on the second run:

@@ -18,9 +18,9 @@ keep them consistent.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import NamedTuple
 
 from strips_framework.errors import PluginError
+from strips_framework.records import Record
 
 # Provers
 EQUALITY = "equality"
@@ -78,7 +78,7 @@ VOCABULARY: dict[str, dict[str, str]] = {
 }
 
 
-class Requirement(NamedTuple):
+class Requirement(Record):
     """A capability that the chosen implementation of ``kind`` must declare.
 
     ``reason`` completes "needs a prover with 'answers' ..." in messages; ``strict=False``
@@ -89,7 +89,15 @@ class Requirement(NamedTuple):
     kind: str
     capability: str
     reason: str
-    strict: bool = True
+    strict: bool
+
+    __slots__ = ("kind", "capability", "reason", "strict")
+
+    def __init__(self, kind: str, capability: str, reason: str, strict: bool = True) -> None:
+        self.kind = kind
+        self.capability = capability
+        self.reason = reason
+        self.strict = strict
 
 
 #: What an optimal ground-task strategy (``astar``) needs of its state heuristic.

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any
 
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
@@ -22,6 +22,7 @@ from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
 from strips_framework.plugin.config import Config
 from strips_framework.plugin.registry import Registry
+from strips_framework.records import Record
 from strips_framework.user_files import is_file
 
 if TYPE_CHECKING:
@@ -36,7 +37,7 @@ if TYPE_CHECKING:
 GROUND_STRATEGY = "ground-strategy"
 
 
-class Planner(NamedTuple):
+class Planner(Record):
     """A checked config and the registry its components come from.
 
     Make one with :meth:`create`; :meth:`run` reads and solves a file, :meth:`solve` a
@@ -46,7 +47,19 @@ class Planner(NamedTuple):
     registry: Registry
     config: Config
     #: Counts the search's scores for a progress line (the CLI sets it on a terminal).
-    progress: Progress | None = None
+    progress: Progress | None
+
+    __slots__ = ("registry", "config", "progress")
+
+    def __init__(
+        self,
+        registry: Registry,
+        config: Config,
+        progress: Progress | None = None,
+    ) -> None:
+        self.registry = registry
+        self.config = config
+        self.progress = progress
 
     @classmethod
     def create(

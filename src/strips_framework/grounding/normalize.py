@@ -13,7 +13,6 @@ all with the action's IPC name.
 from __future__ import annotations
 
 from itertools import product
-from typing import NamedTuple
 
 from strips_framework.pddl.formulas import (
     And,
@@ -27,14 +26,27 @@ from strips_framework.pddl.formulas import (
     Parameter,
 )
 from strips_framework.pddl.task import DerivedPredicate, PddlTask
+from strips_framework.records import Record
 
 
-class Clause(NamedTuple):
+class Clause(Record):
     """A conjunction of literals over the outer variables plus its own ``params``."""
 
-    params: tuple[Parameter, ...] = ()
-    positive: tuple[Atom, ...] = ()
-    negative: tuple[Atom, ...] = ()
+    params: tuple[Parameter, ...]
+    positive: tuple[Atom, ...]
+    negative: tuple[Atom, ...]
+
+    __slots__ = ("params", "positive", "negative")
+
+    def __init__(
+        self,
+        params: tuple[Parameter, ...] = (),
+        positive: tuple[Atom, ...] = (),
+        negative: tuple[Atom, ...] = (),
+    ) -> None:
+        self.params = params
+        self.positive = positive
+        self.negative = negative
 
     def join(self, other: Clause) -> Clause:
         return Clause(

@@ -14,7 +14,7 @@ always has its derived facts evaluated.
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple
+from strips_framework.records import Record
 
 
 def mask_of(facts: tuple[int, ...]) -> int:
@@ -25,33 +25,7 @@ def mask_of(facts: tuple[int, ...]) -> int:
     return mask
 
 
-class _Value:
-    """Equality, hash, ``repr`` and ``_replace`` (as a NamedTuple's) from the fields
-    :attr:`FIELDS` the constructor takes. The ground classes are plain classes with
-    ``__slots__`` rather than NamedTuples because each computes bitsets of its fact
-    tuples when built, which must follow any change ``_replace`` makes."""
-
-    __slots__ = ()
-    FIELDS: ClassVar[tuple[str, ...]]
-
-    def _values(self) -> tuple[object, ...]:
-        return tuple(getattr(self, name) for name in self.FIELDS)
-
-    def __eq__(self, other: object) -> bool:
-        return type(other) is type(self) and other._values() == self._values()  # type: ignore[attr-defined]
-
-    def __hash__(self) -> int:
-        return hash(self._values())
-
-    def __repr__(self) -> str:
-        shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.FIELDS)
-        return f"{type(self).__name__}({shown})"
-
-    def _replace(self, **changes: object) -> _Value:
-        return type(self)(**{**dict(zip(self.FIELDS, self._values(), strict=True)), **changes})
-
-
-class GroundEffect(_Value):
+class GroundEffect(Record):
     """A conditional effect of a ground operator: when every fact of ``condition`` holds
     and none of ``condition_neg`` does in the state the operator is applied in, the
     ``add`` facts become true and the ``delete`` facts false."""
@@ -77,7 +51,7 @@ class GroundEffect(_Value):
         return state & mask == mask and not state & self.condition_neg_mask
 
 
-class GroundOperator(_Value):
+class GroundOperator(Record):
     """One ground action. ``name`` is its IPC plan step, e.g. ``(pick-up a)``. ``add`` and
     ``delete`` are its unconditional effects, ``effects`` the conditional ones;
     ``pre_neg`` the facts that must be false (PDDL negative preconditions)."""
@@ -116,17 +90,31 @@ class GroundOperator(_Value):
         return (state & ~delete) | add
 
 
-class GroundAxiom(NamedTuple):
+class GroundAxiom(Record):
     """``head`` holds when every fact of ``body`` holds and none of ``body_neg`` does.
     ``body_neg`` facts belong to strata below ``stratum``."""
 
     head: int
     body: tuple[int, ...]
-    body_neg: tuple[int, ...] = ()
-    stratum: int = 0
+    body_neg: tuple[int, ...]
+    stratum: int
+
+    __slots__ = ("head", "body", "body_neg", "stratum")
+
+    def __init__(
+        self,
+        head: int,
+        body: tuple[int, ...],
+        body_neg: tuple[int, ...] = (),
+        stratum: int = 0,
+    ) -> None:
+        self.head = head
+        self.body = body
+        self.body_neg = body_neg
+        self.stratum = stratum
 
 
-class GroundTask(_Value):
+class GroundTask(Record):
     """A ground planning task. ``goal`` is a conjunction of facts (a complex PDDL goal is
     compiled to a derived fact); ``init`` is a state with its derived facts evaluated.
     ``derived`` are the facts only axioms make true; ``uses_costs`` is true when the task

@@ -3,85 +3,102 @@
 Terms are plain strings: a variable starts with ``?``, anything else is an object (a
 constant). Equality is an :class:`Atom` with predicate ``=``. ``(and)`` is truth.
 
-Each node is a :class:`~typing.NamedTuple` (built in microseconds, where an attrs class
-costs a compile of its methods at every start-up). A tuple equals any tuple of the same
-items, so the connectives, whose shapes coincide (``(and)`` and ``(or)``, ``exists`` and
-``forall``), compare and hash by their type too (:func:`_typed_equality`).
+Each node is a :class:`~strips_framework.records.Record` (no attrs on the PDDL path: it is
+built at every start-up); records compare by type too, so ``(and)`` never equals ``(or)``.
 """
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from strips_framework.records import Record
 
 
-def _eq(self: tuple, other: object) -> bool:
-    return type(other) is type(self) and tuple.__eq__(self, other)  # type: ignore[arg-type]
-
-
-def _ne(self: tuple, other: object) -> bool:
-    return not _eq(self, other)
-
-
-def _hash(self: tuple) -> int:
-    return hash((type(self).__name__, tuple.__hash__(self)))
-
-
-def _typed_equality(cls: type) -> type:
-    """``cls`` (a NamedTuple) equal only to values of its own type."""
-    cls.__eq__ = _eq  # type: ignore[method-assign,assignment]
-    cls.__ne__ = _ne  # type: ignore[method-assign,assignment]
-    cls.__hash__ = _hash  # type: ignore[method-assign,assignment]
-    return cls
-
-
-class Parameter(NamedTuple):
+class Parameter(Record):
     """A typed variable or object; ``types`` has more than one entry for ``(either ...)``."""
 
     name: str
-    types: tuple[str, ...] = ("object",)
+    types: tuple[str, ...]
+
+    __slots__ = ("name", "types")
+
+    def __init__(self, name: str, types: tuple[str, ...] = ("object",)) -> None:
+        self.name = name
+        self.types = types
 
 
-class Atom(NamedTuple):
+class Atom(Record):
     """``(predicate arg ...)``; also a numeric function application ``(f arg ...)``."""
 
     predicate: str
     args: tuple[str, ...]
 
+    __slots__ = ("predicate", "args")
+
+    def __init__(self, predicate: str, args: tuple[str, ...]) -> None:
+        self.predicate = predicate
+        self.args = args
+
     def __str__(self) -> str:
         return "(" + " ".join((self.predicate, *self.args)) + ")"
 
 
-@_typed_equality
-class Not(NamedTuple):
+class Not(Record):
     part: Formula
 
+    __slots__ = ("part",)
 
-@_typed_equality
-class And(NamedTuple):
+    def __init__(self, part: Formula) -> None:
+        self.part = part
+
+
+class And(Record):
     parts: tuple[Formula, ...]
 
+    __slots__ = ("parts",)
 
-@_typed_equality
-class Or(NamedTuple):
+    def __init__(self, parts: tuple[Formula, ...]) -> None:
+        self.parts = parts
+
+
+class Or(Record):
     parts: tuple[Formula, ...]
 
+    __slots__ = ("parts",)
 
-@_typed_equality
-class Imply(NamedTuple):
+    def __init__(self, parts: tuple[Formula, ...]) -> None:
+        self.parts = parts
+
+
+class Imply(Record):
     condition: Formula
     consequence: Formula
 
+    __slots__ = ("condition", "consequence")
 
-@_typed_equality
-class Exists(NamedTuple):
+    def __init__(self, condition: Formula, consequence: Formula) -> None:
+        self.condition = condition
+        self.consequence = consequence
+
+
+class Exists(Record):
     params: tuple[Parameter, ...]
     body: Formula
 
+    __slots__ = ("params", "body")
 
-@_typed_equality
-class Forall(NamedTuple):
+    def __init__(self, params: tuple[Parameter, ...], body: Formula) -> None:
+        self.params = params
+        self.body = body
+
+
+class Forall(Record):
     params: tuple[Parameter, ...]
     body: Formula
+
+    __slots__ = ("params", "body")
+
+    def __init__(self, params: tuple[Parameter, ...], body: Formula) -> None:
+        self.params = params
+        self.body = body
 
 
 Formula = Atom | Not | And | Or | Imply | Exists | Forall

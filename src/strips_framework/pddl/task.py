@@ -4,21 +4,27 @@ later step (grounding, validation, translation to a framework problem) needs."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import NamedTuple
 
 from strips_framework.errors import InputError
 from strips_framework.pddl.formulas import Atom, Formula, Parameter
+from strips_framework.records import Record
 
 #: An action's cost: a number, or a numeric function term whose value the problem's init gives.
 Cost = int | Atom
 
 
-class Predicate(NamedTuple):
+class Predicate(Record):
     name: str
     params: tuple[Parameter, ...]
 
+    __slots__ = ("name", "params")
 
-class ConditionalEffect(NamedTuple):
+    def __init__(self, name: str, params: tuple[Parameter, ...]) -> None:
+        self.name = name
+        self.params = params
+
+
+class ConditionalEffect(Record):
     """``(forall (params) (when condition effect))``: for every binding of ``params`` to
     objects under which ``condition`` holds in the state the action is applied in, the
     ``add`` atoms become true and the ``delete`` atoms false. A universal effect without
@@ -29,8 +35,22 @@ class ConditionalEffect(NamedTuple):
     add: tuple[Atom, ...]
     delete: tuple[Atom, ...]
 
+    __slots__ = ("params", "condition", "add", "delete")
 
-class Action(NamedTuple):
+    def __init__(
+        self,
+        params: tuple[Parameter, ...],
+        condition: Formula,
+        add: tuple[Atom, ...],
+        delete: tuple[Atom, ...],
+    ) -> None:
+        self.params = params
+        self.condition = condition
+        self.add = add
+        self.delete = delete
+
+
+class Action(Record):
     """A lifted action: the unconditional STRIPS add/delete effects, the conditional and
     universal ones (``when``, ``forall``), and an optional ``total-cost`` increase. All
     conditions are evaluated in the state before the action; deletes apply before adds."""
@@ -40,9 +60,31 @@ class Action(NamedTuple):
     precondition: Formula
     add: tuple[Atom, ...]
     delete: tuple[Atom, ...]
-    cost: Cost | None = None
-    line: int = 0
-    conditional: tuple[ConditionalEffect, ...] = ()
+    cost: Cost | None
+    line: int
+    conditional: tuple[ConditionalEffect, ...]
+
+    __slots__ = ("name", "params", "precondition", "add", "delete", "cost", "line", "conditional")
+
+    def __init__(
+        self,
+        name: str,
+        params: tuple[Parameter, ...],
+        precondition: Formula,
+        add: tuple[Atom, ...],
+        delete: tuple[Atom, ...],
+        cost: Cost | None = None,
+        line: int = 0,
+        conditional: tuple[ConditionalEffect, ...] = (),
+    ) -> None:
+        self.name = name
+        self.params = params
+        self.precondition = precondition
+        self.add = add
+        self.delete = delete
+        self.cost = cost
+        self.line = line
+        self.conditional = conditional
 
     def changed_atoms(self) -> Iterator[Atom]:
         """Every atom an effect of the action may add or delete."""
@@ -53,15 +95,22 @@ class Action(NamedTuple):
             yield from effect.delete
 
 
-class DerivedPredicate(NamedTuple):
+class DerivedPredicate(Record):
     """``(:derived (head ?x ...) body)``: the head holds exactly when the body does."""
 
     head: Atom
     params: tuple[Parameter, ...]
     body: Formula
 
+    __slots__ = ("head", "params", "body")
 
-class Domain(NamedTuple):
+    def __init__(self, head: Atom, params: tuple[Parameter, ...], body: Formula) -> None:
+        self.head = head
+        self.params = params
+        self.body = body
+
+
+class Domain(Record):
     name: str
     requirements: tuple[str, ...]
     #: ``(type, parent)`` pairs; ``object`` is the root and needs no entry.
@@ -72,8 +121,39 @@ class Domain(NamedTuple):
     actions: tuple[Action, ...]
     derived: tuple[DerivedPredicate, ...]
 
+    __slots__ = (
+        "name",
+        "requirements",
+        "types",
+        "constants",
+        "predicates",
+        "functions",
+        "actions",
+        "derived",
+    )
 
-class Problem(NamedTuple):
+    def __init__(
+        self,
+        name: str,
+        requirements: tuple[str, ...],
+        types: tuple[tuple[str, str], ...],
+        constants: tuple[Parameter, ...],
+        predicates: tuple[Predicate, ...],
+        functions: tuple[str, ...],
+        actions: tuple[Action, ...],
+        derived: tuple[DerivedPredicate, ...],
+    ) -> None:
+        self.name = name
+        self.requirements = requirements
+        self.types = types
+        self.constants = constants
+        self.predicates = predicates
+        self.functions = functions
+        self.actions = actions
+        self.derived = derived
+
+
+class Problem(Record):
     name: str
     domain_name: str
     objects: tuple[Parameter, ...]
@@ -83,6 +163,26 @@ class Problem(NamedTuple):
     goal: Formula
     #: ``(:metric minimize (total-cost))``.
     minimize_cost: bool
+
+    __slots__ = ("name", "domain_name", "objects", "init", "numeric", "goal", "minimize_cost")
+
+    def __init__(
+        self,
+        name: str,
+        domain_name: str,
+        objects: tuple[Parameter, ...],
+        init: tuple[Atom, ...],
+        numeric: tuple[tuple[Atom, int], ...],
+        goal: Formula,
+        minimize_cost: bool,
+    ) -> None:
+        self.name = name
+        self.domain_name = domain_name
+        self.objects = objects
+        self.init = init
+        self.numeric = numeric
+        self.goal = goal
+        self.minimize_cost = minimize_cost
 
 
 def _objects_by_type(domain: Domain, problem: Problem) -> dict[str, tuple[str, ...]]:

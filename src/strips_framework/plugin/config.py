@@ -41,12 +41,13 @@ their key path and what was expected.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any
 
 from strips_framework.errors import ConfigError, PluginError
 from strips_framework.limits import Limits
 from strips_framework.options import OptionError, declared_options, type_words
 from strips_framework.plugin.registry import KINDS, Registration, Registry
+from strips_framework.records import Record
 from strips_framework.user_files import KeyLines, read_toml_with_keys
 
 COMPONENTS = (
@@ -73,25 +74,48 @@ PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
 TABLE_OF = {"ground-strategy": "strategy"}
 
 
-class Choice(NamedTuple):
+class Choice(Record):
     """An implementation picked by name, with the options to build it."""
 
     kind: str
     name: str
-    options: dict[str, Any] = {}  # noqa: RUF012 - never changed: read by Config.build
+    options: dict[str, Any]
+
+    __slots__ = ("kind", "name", "options")
+
+    def __init__(self, kind: str, name: str, options: dict[str, Any] = {}) -> None:
+        self.kind = kind
+        self.name = name
+        self.options = options
 
 
-class Config(NamedTuple):
+class Config(Record):
     """What a config file (or the defaults) chose: read it with :meth:`from_file`."""
 
     choices: dict[str, Choice]
     limits: Limits
     #: The file the config came from, and where its keys are written (for messages).
-    source: KeyLines = KeyLines("<defaults>")
+    source: KeyLines
     #: The kinds the config file chose itself (the others took their defaults).
-    chosen: frozenset[str] = frozenset()
+    chosen: frozenset[str]
     #: The tables of :data:`SECTIONS`, as written (read by the commands that use them).
-    sections: dict[str, dict[str, Any]] = {}  # noqa: RUF012 - never changed
+    sections: dict[str, dict[str, Any]]
+
+    __slots__ = ("choices", "limits", "source", "chosen", "sections")
+
+    def __init__(
+        self,
+        choices: dict[str, Choice],
+        limits: Limits,
+        source: KeyLines = KeyLines("<defaults>"),
+        chosen: frozenset[str] = frozenset(),
+        sections: dict[str, dict[str, Any]] = {},
+    ) -> None:
+        self.choices = choices
+        self.limits = limits
+        self.source = source
+        self.chosen = chosen
+        self.sections = sections
 
     @classmethod
     def default(cls) -> Config:

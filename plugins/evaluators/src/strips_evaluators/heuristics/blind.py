@@ -3,17 +3,24 @@
 from __future__ import annotations
 
 import math
-from typing import ClassVar, NamedTuple
+from typing import ClassVar
 
 
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-class BlindEstimator(NamedTuple):
+class BlindEstimator(Record):
     goal_mask: int
     #: What any step from a non-goal state costs at least (``math.inf`` with no operators).
     min_cost: float
+
+    __slots__ = ("goal_mask", "min_cost")
+
+    def __init__(self, goal_mask: int, min_cost: float) -> None:
+        self.goal_mask = goal_mask
+        self.min_cost = min_cost
 
     def estimate(self, state: int) -> float:
         return 0 if state & self.goal_mask == self.goal_mask else self.min_cost

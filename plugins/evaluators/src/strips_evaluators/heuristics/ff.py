@@ -11,7 +11,7 @@ they start a relaxed plan, so they are the moves most likely to make progress (F
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple
+from typing import ClassVar
 
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
@@ -20,11 +20,18 @@ from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-class FFEstimator(NamedTuple):
+class FFEstimator(Record):
     explorer: Explorer
     goal_mask: int
+
+    __slots__ = ("explorer", "goal_mask")
+
+    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
+        self.explorer = explorer
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         if state & self.goal_mask == self.goal_mask:

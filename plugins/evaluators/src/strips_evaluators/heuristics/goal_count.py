@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple
+from typing import ClassVar
 
 
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-class GoalCountEstimator(NamedTuple):
+class GoalCountEstimator(Record):
     goal_mask: int
+
+    __slots__ = ("goal_mask",)
+
+    def __init__(self, goal_mask: int) -> None:
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         return (self.goal_mask & ~state).bit_count()

@@ -8,7 +8,7 @@ operators at least that expensive, so hmax is admissible (and consistent).
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple
+from typing import ClassVar
 
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
@@ -16,11 +16,18 @@ from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-class MaxEstimator(NamedTuple):
+class MaxEstimator(Record):
     explorer: Explorer
     goal_mask: int
+
+    __slots__ = ("explorer", "goal_mask")
+
+    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
+        self.explorer = explorer
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         if state & self.goal_mask == self.goal_mask:

@@ -17,7 +17,7 @@ can achieve several landmarks.
 from __future__ import annotations
 
 import math
-from typing import ClassVar, NamedTuple
+from typing import ClassVar
 
 
 from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
@@ -25,9 +25,10 @@ from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in, relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-class LandmarkCountEstimator(NamedTuple):
+class LandmarkCountEstimator(Record):
     graph: LandmarkGraph
     goal_mask: int
     #: Facts whose label holds a landmark: the ones worth looking at in a state.
@@ -38,6 +39,24 @@ class LandmarkCountEstimator(NamedTuple):
     weight: list[int] | None
     #: The relaxed task: real operators of relaxed ones and their applicability masks.
     relaxed: RelaxedTask
+
+    __slots__ = ("graph", "goal_mask", "informative", "initially", "weight", "relaxed")
+
+    def __init__(
+        self,
+        graph: LandmarkGraph,
+        goal_mask: int,
+        informative: int,
+        initially: int,
+        weight: list[int] | None,
+        relaxed: RelaxedTask,
+    ) -> None:
+        self.graph = graph
+        self.goal_mask = goal_mask
+        self.informative = informative
+        self.initially = initially
+        self.weight = weight
+        self.relaxed = relaxed
 
     def estimate(self, state: int) -> float:
         return self._count(state)[0]
