@@ -2,6 +2,7 @@
 
     .venv/bin/python benchmarks/startup_vs_pyperplan.py                 # blocks task01
     .venv/bin/python benchmarks/startup_vs_pyperplan.py ../shared/bench/ipc/gripper/task01.pddl --runs 40
+    .venv/bin/python benchmarks/startup_vs_pyperplan.py --compile-each-run   # no .pyc for either
 
 On a small task nearly all of a planner's wall time is start-up (interpreter, imports,
 plugin discovery), so this is what a user running many small tasks pays. Each round runs
@@ -34,11 +35,16 @@ def _pyperplan() -> Path:
     return venv / "bin" / "pyperplan"
 
 
-def _wall(command: Sequence[str], cwd: Path) -> float:
+def _wall(command: Sequence[str], cwd: Path, compile_each_run: bool) -> float:
     """Seconds for one run of ``command``; a failed run is an error, not a fast time.
     Bytecode is written (an installed package has its ``.pyc`` files; without them every
-    run would compile the modules again and measure the compiler)."""
+    run would compile the modules again and measure the compiler), unless
+    ``compile_each_run``: then no ``.pyc`` file is read or written (an empty
+    ``PYTHONPYCACHEPREFIX``), so both planners compile every module they import."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    if compile_each_run:
+        env["PYTHONDONTWRITEBYTECODE"] = "1"
+        env["PYTHONPYCACHEPREFIX"] = str(cwd / "no-pycache")
     start = time.perf_counter()
     subprocess.run(
         command, cwd=cwd, env=env, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
@@ -52,6 +58,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     default = bench / "blocks" / "task01.pddl" if bench is not None else None
     parser.add_argument("problem", type=Path, nargs="?", default=default, help="a PDDL problem")
     parser.add_argument("--runs", type=int, default=20, help="rounds (default 20)")
+    parser.add_argument("--compile-each-run", action="store_true",
+                        help="no bytecode files for either planner: each run compiles its modules")
     args = parser.parse_args(argv)
     if args.problem is None:
         parser.error("no problem given and shared/bench/ipc not found")
@@ -67,11 +75,11 @@ def main(argv: Sequence[str] | None = None) -> int:
             "pyperplan": [str(_pyperplan()), "-s", "gbf", "-H", "hff", str(domain), str(problem)],
         }
         for name in ("strips", "pyperplan"):
-            _wall(commands[name], copy)  # warm the page cache and the .pyc files
+            _wall(commands[name], copy, args.compile_each_run)  # warm the page cache and the .pyc files
         for round_ in range(args.runs):
             order = list(commands) if round_ % 2 == 0 else list(reversed(commands))
             for name in order:
-                times[name].append(_wall(commands[name], copy))
+                times[name].append(_wall(commands[name], copy, args.compile_each_run))
     medians = {name: statistics.median(values) for name, values in times.items()}
     for name, value in medians.items():
         print(f"{name:<10} median {value * 1000:7.1f} ms  (min {min(times[name]) * 1000:.1f}, {args.runs} runs)")

@@ -10,7 +10,8 @@ from attrs import frozen
 from strips_framework.errors import PluginError
 from strips_framework.plugin import hookspecs
 from strips_framework.plugin.hookspecs import hookimpl
-from strips_framework.plugin.registry import KINDS, Registry, get_plugin_manager
+from strips_framework.plugin.manager import get_plugin_manager
+from strips_framework.plugin.registry import KINDS, Registry
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "hooks.md"
 HOOKS = [

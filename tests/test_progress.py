@@ -8,7 +8,6 @@ import re
 import time
 from pathlib import Path
 
-import attrs
 
 from strips_framework.cli.main import main
 from strips_framework.planner import Planner
@@ -42,8 +41,9 @@ def test_world_model_search_shows_nodes_scored(monkeypatch):
 
 def test_forward_search_counts_states_evaluated_and_the_best_estimate():
     progress = Progress(io.StringIO())
-    planner = attrs.evolve(Planner.create({"strategy": "astar", "heuristic": "lmcut"}),
-                           progress=progress)
+    planner = Planner.create({"strategy": "astar", "heuristic": "lmcut"})._replace(
+        progress=progress
+    )
     result = planner.run(BLOCKS)
     assert result.solved and progress.what == "states evaluated"
     assert progress.scored >= result.statistics.evaluated > 0

@@ -19,9 +19,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from attrs import frozen
-
 from strips_framework.errors import PluginError
+from strips_framework.records import Record
 
 # Provers
 EQUALITY = "equality"
@@ -79,8 +78,7 @@ VOCABULARY: dict[str, dict[str, str]] = {
 }
 
 
-@frozen
-class Requirement:
+class Requirement(Record):
     """A capability that the chosen implementation of ``kind`` must declare.
 
     ``reason`` completes "needs a prover with 'answers' ..." in messages; ``strict=False``
@@ -91,7 +89,15 @@ class Requirement:
     kind: str
     capability: str
     reason: str
-    strict: bool = True
+    strict: bool
+
+    __slots__ = ("kind", "capability", "reason", "strict")
+
+    def __init__(self, kind: str, capability: str, reason: str, strict: bool = True) -> None:
+        self.kind = kind
+        self.capability = capability
+        self.reason = reason
+        self.strict = strict
 
 
 #: What an optimal ground-task strategy (``astar``) needs of its state heuristic.

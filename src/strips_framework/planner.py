@@ -16,15 +16,13 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import attrs
-from attrs import frozen
-
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
 from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
 from strips_framework.plugin.config import Config
 from strips_framework.plugin.registry import Registry
+from strips_framework.records import Record
 from strips_framework.user_files import is_file
 
 if TYPE_CHECKING:
@@ -39,8 +37,7 @@ if TYPE_CHECKING:
 GROUND_STRATEGY = "ground-strategy"
 
 
-@frozen
-class Planner:
+class Planner(Record):
     """A checked config and the registry its components come from.
 
     Make one with :meth:`create`; :meth:`run` reads and solves a file, :meth:`solve` a
@@ -50,7 +47,19 @@ class Planner:
     registry: Registry
     config: Config
     #: Counts the search's scores for a progress line (the CLI sets it on a terminal).
-    progress: Progress | None = None
+    progress: Progress | None
+
+    __slots__ = ("registry", "config", "progress")
+
+    def __init__(
+        self,
+        registry: Registry,
+        config: Config,
+        progress: Progress | None = None,
+    ) -> None:
+        self.registry = registry
+        self.config = config
+        self.progress = progress
 
     @classmethod
     def create(
@@ -175,13 +184,12 @@ class Planner:
 
             macrops = _read_library(library, to_problem(pddl))
             result = solve_with_macros(self, task, macrops, clock)
-        statistics = attrs.evolve(
-            result.statistics,
+        statistics = result.statistics._replace(
             parse_seconds=parse_seconds,
             ground_seconds=searching_since - grounding_since,
             search_seconds=clock.elapsed() - searching_since,  # the heuristic's set-up included
         )
-        return attrs.evolve(result, statistics=statistics, seconds=clock.elapsed())
+        return result._replace(statistics=statistics, seconds=clock.elapsed())
 
     def solve(
         self, problem: Problem, clock: Clock | None = None, library: Library | None = None

@@ -14,25 +14,23 @@ import time
 from collections.abc import Sequence
 from typing import IO, Any, ClassVar
 
-from attrs import define, field
-
 #: Seconds between two progress lines.
 INTERVAL = 1.0
 
 
-@define
 class Progress:
     """Counts and the best score of one run, shown on ``stream`` while it is entered."""
 
-    stream: IO[str]
-    interval: float = field(factory=lambda: INTERVAL)
-    scored: int = 0
-    best: float = math.inf
-    what: str = "states evaluated"
-    _started: float = field(factory=time.perf_counter)
-    _stop: threading.Event = field(factory=threading.Event)
-    _thread: threading.Thread | None = None
-    _shown: bool = False
+    def __init__(self, stream: IO[str], interval: float | None = None) -> None:
+        self.stream = stream
+        self.interval = INTERVAL if interval is None else interval
+        self.scored = 0
+        self.best = math.inf
+        self.what = "states evaluated"
+        self._started = time.perf_counter()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self._shown = False
 
     def note(self, score: float) -> float:
         """Count one score (called for every state or node the search scores)."""
@@ -77,12 +75,12 @@ class Progress:
             self._shown = True
 
 
-@define
 class CountingEstimator:
     """A state estimator that counts its calls and the best estimate for :class:`Progress`."""
 
-    inner: Any
-    progress: Progress
+    def __init__(self, inner: Any, progress: Progress) -> None:
+        self.inner = inner
+        self.progress = progress
 
     def estimate(self, state: int) -> float:
         return self.progress.note(self.inner.estimate(state))
@@ -92,13 +90,14 @@ class CountingEstimator:
         return self.progress.note(value), preferred
 
 
-@define
 class CountingEvaluator:
     """A node evaluator that counts its calls and the best score for :class:`Progress`."""
 
     name: ClassVar[str] = "progress"
-    inner: Any
-    progress: Progress
+
+    def __init__(self, inner: Any, progress: Progress) -> None:
+        self.inner = inner
+        self.progress = progress
 
     @property
     def admissible(self) -> bool:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import enum
 from typing import TYPE_CHECKING, ClassVar, Protocol
 
-from attrs import frozen
+from strips_framework.records import Record
 
 if TYPE_CHECKING:
     from strips_framework.means_ends.result import Tree
@@ -69,8 +69,7 @@ class FamilyStatistics(Protocol):
         ...
 
 
-@frozen
-class Result:
+class Result(Record):
     """One search's outcome.
 
     ``plan`` holds the steps in IPC form, ``(name arg ...)``, when ``status`` is SOLVED;
@@ -84,9 +83,29 @@ class Result:
     plan: tuple[str, ...] | None
     cost: int | None
     statistics: FamilyStatistics
-    seconds: float = 0.0
-    uses_costs: bool = False
-    tree: Tree | None = None
+    seconds: float
+    uses_costs: bool
+    tree: Tree | None
+
+    __slots__ = ("status", "plan", "cost", "statistics", "seconds", "uses_costs", "tree")
+
+    def __init__(
+        self,
+        status: Status,
+        plan: tuple[str, ...] | None,
+        cost: int | None,
+        statistics: FamilyStatistics,
+        seconds: float = 0.0,
+        uses_costs: bool = False,
+        tree: Tree | None = None,
+    ) -> None:
+        self.status = status
+        self.plan = plan
+        self.cost = cost
+        self.statistics = statistics
+        self.seconds = seconds
+        self.uses_costs = uses_costs
+        self.tree = tree
 
     @property
     def solved(self) -> bool:

@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 # task needs none of them.
 
 
-def add_parsers(commands: argparse._SubParsersAction) -> None:
+def add_learn(commands: argparse._SubParsersAction) -> None:
     learn = commands.add_parser(
         "learn", help="solve problems in turn, learning MACROPs from each plan"
     )
@@ -32,6 +32,8 @@ def add_parsers(commands: argparse._SubParsersAction) -> None:
     learn.add_argument("--domain", type=Path, help="the PDDL domain of the problems")
     learn.add_argument("--config", type=Path, help="TOML config (strategy, [learner], limits)")
 
+
+def add_table(commands: argparse._SubParsersAction) -> None:
     table = commands.add_parser("table", help="draw a plan's or a MACROP's triangle table")
     table.add_argument("files", type=Path, nargs="+", metavar="[DOMAIN] PROBLEM [PLAN]",
                        help="the problem and a plan for it (or --macrops and --name)")
@@ -42,6 +44,8 @@ def add_parsers(commands: argparse._SubParsersAction) -> None:
     table.add_argument("--kernel", type=int, help="outline only this kernel in the picture")
     table.add_argument("--config", type=Path, help="TOML config")
 
+
+def add_execute(commands: argparse._SubParsersAction) -> None:
     run = commands.add_parser(
         "execute", help="run a plan under PLANEX monitoring in a simulated, faulty world"
     )

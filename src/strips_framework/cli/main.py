@@ -9,26 +9,29 @@ import sys
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
-
-import attrs
+from typing import TYPE_CHECKING
 
 from strips_framework import __version__
 from strips_framework.bench import command as bench_command
 from strips_framework.cli import exit_codes, report
 from strips_framework.cli import macrops as macrop_command
 from strips_framework.errors import StripsError
-from strips_framework.formats.ipc import plan_text, read_plan
 from strips_framework.limits import Clock, LimitReached
 from strips_framework.pddl.files import is_pddl
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Choice, Config
 from strips_framework.plugin.registry import KINDS, Registration
-from strips_framework.progress import Progress
 from strips_framework.result import Result, Status
 from strips_framework.user_files import check_writable, write_atomically
 
+if TYPE_CHECKING:
+    from strips_framework.progress import Progress
 
-def _parser() -> argparse.ArgumentParser:
+
+def _parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The command line parser: with every command, or only ``command``'s when the
+    command line names one (building the arguments of all the others is a measurable
+    part of a small task's whole run)."""
     parser = argparse.ArgumentParser(
         prog="strips",
         description="STRIPS (Fikes & Nilsson, 1971): means-ends planning over first-order "
@@ -40,7 +43,13 @@ def _parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"strips {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
+    for name, add in COMMAND_PARSERS.items():
+        if command in (None, name):
+            add(commands)
+    return parser
 
+
+def _add_solve(commands: argparse._SubParsersAction) -> None:
     solve = commands.add_parser("solve", help="search for a plan")
     solve.add_argument(
         "files",
@@ -57,6 +66,8 @@ def _parser() -> argparse.ArgumentParser:
     solve.add_argument("--macrops", type=Path, metavar="LIBRARY",
                        help="use the MACROPs of this library (see 'strips learn')")
 
+
+def _add_prove(commands: argparse._SubParsersAction) -> None:
     prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
     prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
     prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
@@ -67,6 +78,8 @@ def _parser() -> argparse.ArgumentParser:
         "--prover", help="a registered prover by name (default: the config's [prover] name)"
     )
 
+
+def _add_validate(commands: argparse._SubParsersAction) -> None:
     validate = commands.add_parser(
         "validate", help="replay a plan in the independent simulator and check the goal"
     )
@@ -79,11 +92,22 @@ def _parser() -> argparse.ArgumentParser:
         "plan: one step a line, ';' comments",
     )
 
-    bench_command.add_parser(commands)
-    macrop_command.add_parsers(commands)
 
+def _add_plugins(commands: argparse._SubParsersAction) -> None:
     commands.add_parser("plugins", help="list the registered implementations and options")
-    return parser
+
+
+#: Each command's parser, in the order ``strips --help`` lists them.
+COMMAND_PARSERS = {
+    "solve": _add_solve,
+    "prove": _add_prove,
+    "validate": _add_validate,
+    "bench": bench_command.add_parser,
+    "learn": macrop_command.add_learn,
+    "table": macrop_command.add_table,
+    "execute": macrop_command.add_execute,
+    "plugins": _add_plugins,
+}
 
 
 def _positive(text: str) -> int:
@@ -104,7 +128,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         if argv[:2] == ["bench", "report"]:
             return bench_command.report(argv[2:])
-        args = _parser().parse_args(argv)
+        args = _parser(argv[0] if argv and argv[0] in COMMAND_PARSERS else None).parse_args(argv)
         if args.command == "bench":
             return bench_command.bench(args)
         config = Config.from_file(args.config) if getattr(args, "config", None) else Config.default()
@@ -170,10 +194,14 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
             check_writable(path, what)  # before the search, not after it
     clock = Clock(planner.config.limits.time)
     result: Result | None = None
-    progress = Progress(sys.stderr) if sys.stderr.isatty() else None
+    progress: Progress | None = None
+    if sys.stderr.isatty():  # the progress line's module (and threading) only then
+        from strips_framework.progress import Progress
+
+        progress = Progress(sys.stderr)
     try:
         with enforced(planner.config.limits), progress or contextlib.nullcontext():
-            result = attrs.evolve(planner, progress=progress).run(problem, domain, clock, args.macrops)
+            result = planner._replace(progress=progress).run(problem, domain, clock, args.macrops)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
         status = limit.status
     except MemoryError:
@@ -213,6 +241,8 @@ def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> Non
 
             write_atomically(args.tree, search_tree_to_dot(result.tree, f"{problem.stem}: search tree"))
     if args.plan_file and result.plan is not None and result.cost is not None:
+        from strips_framework.formats.ipc import plan_text  # only --plan-file needs it
+
         write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs))
 
 
@@ -225,7 +255,7 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
     if args.prover is not None and args.prover != config.choices["prover"].name:
         # Another prover than the config's: with its own defaults, not the config's options.
         choices = {**config.choices, "prover": Choice("prover", args.prover)}
-        config = attrs.evolve(config, choices=choices)
+        config = config._replace(choices=choices)
     status, answers = prove_tptp(config.build(planner.registry, "prover"), problem, effort)
     print(szs_lines(problem, status, answers))
     return 0
@@ -233,6 +263,8 @@ def _prove(planner: Planner, args: argparse.Namespace) -> int:
 
 def _validate(planner: Planner, args: argparse.Namespace) -> int:
     domain, problem = _domain_and_problem(args.files, "validate", rest=1)
+    from strips_framework.formats.ipc import read_plan
+
     steps = read_plan(args.files[-1], ipc_only=is_pddl(problem, domain))
     if is_pddl(problem, domain):
         from strips_framework.pddl.validate import validate_plan

@@ -11,6 +11,7 @@ from strips_framework.forward.result import ForwardStatistics
 from strips_framework.forward.space import StateSpace
 from strips_framework.grounding.task import GroundTask
 from strips_framework.limits import Clock, LimitReached, Limits
+from strips_framework.options import Configurable
 from strips_framework.result import Result, Status
 
 
@@ -32,7 +33,7 @@ class SearchRun:
         self.dead_ends = 0
 
 
-class ForwardStrategy:
+class ForwardStrategy(Configurable):
     """The base of the strategies over ground tasks (the ``ground-strategy`` plugin kind,
     :class:`~strips_framework.means_ends.components.GroundTaskStrategy`): the planner gives
     them a :class:`GroundTask` and the heuristic's estimator instead of a first-order

@@ -11,13 +11,10 @@ from __future__ import annotations
 from collections import deque
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.space import NO_PARENT
 
 
-@frozen
 class BreadthFirstSearch(ForwardStrategy):
     """Blind breadth-first search: a plan with the fewest steps; ignores the heuristic."""
 

@@ -14,12 +14,11 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.capabilities import ADMISSIBLE_HEURISTIC, OPTIMAL, Requirement
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.openlists import open_list
 from strips_framework.forward.space import NO_PARENT
+from strips_framework.options import Option
 
 
 class EagerSearch(ForwardStrategy):
@@ -91,7 +90,6 @@ class EagerSearch(ForwardStrategy):
         return None
 
 
-@frozen
 class AStarSearch(EagerSearch):
     """A*: lowest f = g + h first, then lowest h, then first in; reopens closed states.
     Optimal with an admissible heuristic."""
@@ -105,7 +103,6 @@ class AStarSearch(EagerSearch):
         return (g + h, h)
 
 
-@frozen
 class WeightedAStarSearch(EagerSearch):
     """Weighted A*: lowest g + weight * h first, then lowest h, then first in.
 
@@ -113,13 +110,13 @@ class WeightedAStarSearch(EagerSearch):
 
     name: ClassVar[str] = "wastar"
     reopen: ClassVar[bool] = True
-    weight: float = field(default=2.0, validator=[validators.instance_of(float), validators.ge(1)])
+    options = (Option("weight", float, 2.0, minimum=1, doc="the weight of h in g + weight * h"),)
+    weight: float
 
     def key(self, g: float, h: float) -> object:
         return (g + self.weight * h, h)
 
 
-@frozen
 class GreedySearch(EagerSearch):
     """Eager greedy best-first search: lowest h first, then first in.
 
@@ -128,8 +125,10 @@ class GreedySearch(EagerSearch):
 
     name: ClassVar[str] = "gbfs"
     reopen: ClassVar[bool] = False
-    preferred: bool = field(default=True, validator=validators.instance_of(bool))
-    boost: int = field(default=0, validator=[validators.instance_of(int), validators.ge(0)])
+    options = (
+        Option("preferred", bool, True, doc="a second open list for preferred operators"),
+        Option("boost", int, 0, minimum=0, doc="extra turns of that list on progress"),
+    )
 
     def key(self, g: float, h: float) -> object:
         return h

@@ -17,13 +17,11 @@ from collections import deque
 from collections.abc import Sequence
 from typing import ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.space import NO_PARENT
+from strips_framework.options import Option
 
 
-@frozen
 class EnforcedHillClimbing(ForwardStrategy):
     """Enforced hill-climbing (FF): breadth-first to a better state, then commit to it.
 
@@ -31,7 +29,8 @@ class EnforcedHillClimbing(ForwardStrategy):
 
     name: ClassVar[str] = "ehc"
     complete: ClassVar[bool] = False
-    preferred: bool = field(default=True, validator=validators.instance_of(bool))
+    options = (Option("preferred", bool, True, doc="follow only the helpful actions"),)
+    preferred: bool
 
     def run(self, run: SearchRun) -> int | None:
         task, space, budget = run.task, run.space, run.budget

@@ -15,21 +15,23 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.openlists import open_list
 from strips_framework.forward.space import NO_PARENT
+from strips_framework.options import Option
 
 
-@frozen
 class LazyGreedySearch(ForwardStrategy):
     """Lazy greedy best-first search with deferred evaluation and preferred operators.
     Ties between equal estimates go first in, first out."""
 
     name: ClassVar[str] = "lazy-gbfs"
-    preferred: bool = field(default=True, validator=validators.instance_of(bool))
-    boost: int = field(default=1000, validator=[validators.instance_of(int), validators.ge(0)])
+    options = (
+        Option("preferred", bool, True, doc="a second open list for preferred operators"),
+        Option("boost", int, 1000, minimum=0, doc="extra turns of that list on progress"),
+    )
+    preferred: bool
+    boost: int
 
     def run(self, run: SearchRun) -> int | None:
         task, space, budget = run.task, run.space, run.budget

@@ -3,31 +3,68 @@ the counts Fast Downward reports."""
 
 from __future__ import annotations
 
-from typing import ClassVar
-
-from attrs import frozen
+from strips_framework.records import Record
 
 
-@frozen
-class ForwardStatistics:
+class ForwardStatistics(Record):
     """Counts as Fast Downward reports them: ``expanded`` states (successors generated),
     ``evaluated`` heuristic calls, ``generated`` successor states, ``reopened`` closed
     states reached again more cheaply; ``dead_ends`` states the heuristic proved hopeless.
     Times are wall-clock seconds; ``peak_memory_mib`` is the process's peak resident set."""
 
-    family: ClassVar[str] = "forward"
+    family = "forward"  # a class attribute, not a field (FamilyStatistics.family)
 
-    expanded: int = 0
-    evaluated: int = 0
-    generated: int = 0
-    reopened: int = 0
-    dead_ends: int = 0
-    facts: int = 0
-    operators: int = 0
-    parse_seconds: float = 0.0
-    ground_seconds: float = 0.0
-    search_seconds: float = 0.0
-    peak_memory_mib: float = 0.0
+    expanded: int
+    evaluated: int
+    generated: int
+    reopened: int
+    dead_ends: int
+    facts: int
+    operators: int
+    parse_seconds: float
+    ground_seconds: float
+    search_seconds: float
+    peak_memory_mib: float
+
+    __slots__ = (
+        "expanded",
+        "evaluated",
+        "generated",
+        "reopened",
+        "dead_ends",
+        "facts",
+        "operators",
+        "parse_seconds",
+        "ground_seconds",
+        "search_seconds",
+        "peak_memory_mib",
+    )
+
+    def __init__(
+        self,
+        expanded: int = 0,
+        evaluated: int = 0,
+        generated: int = 0,
+        reopened: int = 0,
+        dead_ends: int = 0,
+        facts: int = 0,
+        operators: int = 0,
+        parse_seconds: float = 0.0,
+        ground_seconds: float = 0.0,
+        search_seconds: float = 0.0,
+        peak_memory_mib: float = 0.0,
+    ) -> None:
+        self.expanded = expanded
+        self.evaluated = evaluated
+        self.generated = generated
+        self.reopened = reopened
+        self.dead_ends = dead_ends
+        self.facts = facts
+        self.operators = operators
+        self.parse_seconds = parse_seconds
+        self.ground_seconds = ground_seconds
+        self.search_seconds = search_seconds
+        self.peak_memory_mib = peak_memory_mib
 
     def as_dict(self) -> dict[str, float | int]:
         return {

@@ -8,23 +8,34 @@ are final by the time their stratum's axioms run (negation as failure is sound).
 
 from __future__ import annotations
 
-from attrs import frozen
 
 from strips_framework.grounding.task import GroundTask, mask_of
+from strips_framework.records import Record
 
 
-@frozen
-class _Rule:
+class _Rule(Record):
     head: int
     body_mask: int
     neg_mask: int
 
+    __slots__ = ("head", "body_mask", "neg_mask")
 
-@frozen
-class _Stratum:
+    def __init__(self, head: int, body_mask: int, neg_mask: int) -> None:
+        self.head = head
+        self.body_mask = body_mask
+        self.neg_mask = neg_mask
+
+
+class _Stratum(Record):
     rules: tuple[_Rule, ...]
     #: For a fact derived in this stratum, the rules whose body contains it.
     watching: dict[int, tuple[_Rule, ...]]
+
+    __slots__ = ("rules", "watching")
+
+    def __init__(self, rules: tuple[_Rule, ...], watching: dict[int, tuple[_Rule, ...]]) -> None:
+        self.rules = rules
+        self.watching = watching
 
 
 class AxiomEvaluator:

@@ -20,8 +20,6 @@ from __future__ import annotations
 from collections.abc import Callable
 from operator import itemgetter
 
-from attrs import evolve, frozen
-
 from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.normalize import Clause, Normalizer
@@ -30,6 +28,7 @@ from strips_framework.grounding.relevance import RawAxiom, RawEffect, RawOperato
 from strips_framework.grounding.task import GroundAxiom, GroundEffect, GroundOperator, GroundTask
 from strips_framework.pddl.formulas import Atom, Parameter
 from strips_framework.pddl.task import Action, ConditionalEffect, PddlTask, missing_cost
+from strips_framework.records import Record
 
 #: The derived fact that stands for a goal which is not a conjunction of atoms.
 GOAL = "@goal"
@@ -42,15 +41,28 @@ Fact = tuple[str, Args]
 Pattern = tuple[dict[Args, int], Callable[[Args], Args]]
 
 
-@frozen
-class _Source:
+class _Source(Record):
     """What a reachability rule stands for: an action, one of its conditional effects,
     or the head of an axiom."""
 
     clause: Clause
-    action: Action | None = None
-    head: Atom | None = None
-    effect: ConditionalEffect | None = None
+    action: Action | None
+    head: Atom | None
+    effect: ConditionalEffect | None
+
+    __slots__ = ("clause", "action", "head", "effect")
+
+    def __init__(
+        self,
+        clause: Clause,
+        action: Action | None = None,
+        head: Atom | None = None,
+        effect: ConditionalEffect | None = None,
+    ) -> None:
+        self.clause = clause
+        self.action = action
+        self.head = head
+        self.effect = effect
 
 
 def ground(task: PddlTask, prune_irrelevant: bool = True) -> GroundTask:
@@ -200,7 +212,7 @@ class _Grounder:
             ),
             uses_costs=self.task.problem.minimize_cost,
         )
-        return evolve(task, init=AxiomEvaluator(task).evaluate(task.init))
+        return task._replace(init=AxiomEvaluator(task).evaluate(task.init))
 
     def _records(
         self, reach: Reachability, number: dict[Fact, int]

@@ -14,8 +14,6 @@ from __future__ import annotations
 
 from itertools import product
 
-from attrs import frozen
-
 from strips_framework.pddl.formulas import (
     And,
     Atom,
@@ -28,15 +26,27 @@ from strips_framework.pddl.formulas import (
     Parameter,
 )
 from strips_framework.pddl.task import DerivedPredicate, PddlTask
+from strips_framework.records import Record
 
 
-@frozen
-class Clause:
+class Clause(Record):
     """A conjunction of literals over the outer variables plus its own ``params``."""
 
-    params: tuple[Parameter, ...] = ()
-    positive: tuple[Atom, ...] = ()
-    negative: tuple[Atom, ...] = ()
+    params: tuple[Parameter, ...]
+    positive: tuple[Atom, ...]
+    negative: tuple[Atom, ...]
+
+    __slots__ = ("params", "positive", "negative")
+
+    def __init__(
+        self,
+        params: tuple[Parameter, ...] = (),
+        positive: tuple[Atom, ...] = (),
+        negative: tuple[Atom, ...] = (),
+    ) -> None:
+        self.params = params
+        self.positive = positive
+        self.negative = negative
 
     def join(self, other: Clause) -> Clause:
         return Clause(

@@ -19,9 +19,8 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable
 
-from attrs import frozen
-
 from strips_framework.pddl.formulas import Atom
+from strips_framework.records import Record
 
 Args = tuple[str, ...]
 
@@ -48,8 +47,7 @@ class FactIndex:
         return index.get(key, [])
 
 
-@frozen
-class Rule:
+class Rule(Record):
     """``heads`` become reachable for every binding of ``params`` (each ranging over
     ``domains``, the objects of its type) that makes the atoms of ``body`` reachable,
     leaves the static atoms of ``absent`` false, and satisfies the ``equal`` and
@@ -59,11 +57,33 @@ class Rule:
     domains: tuple[frozenset[str], ...]
     body: tuple[Atom, ...]
     heads: tuple[Atom, ...]
-    absent: tuple[Atom, ...] = ()
-    equal: tuple[tuple[str, str], ...] = ()
-    unequal: tuple[tuple[str, str], ...] = ()
+    absent: tuple[Atom, ...]
+    equal: tuple[tuple[str, str], ...]
+    unequal: tuple[tuple[str, str], ...]
     #: Further atoms whose terms need slots: what the caller builds from an instance.
-    mentions: tuple[Atom, ...] = ()
+    mentions: tuple[Atom, ...]
+
+    __slots__ = ("params", "domains", "body", "heads", "absent", "equal", "unequal", "mentions")
+
+    def __init__(
+        self,
+        params: tuple[str, ...],
+        domains: tuple[frozenset[str], ...],
+        body: tuple[Atom, ...],
+        heads: tuple[Atom, ...],
+        absent: tuple[Atom, ...] = (),
+        equal: tuple[tuple[str, str], ...] = (),
+        unequal: tuple[tuple[str, str], ...] = (),
+        mentions: tuple[Atom, ...] = (),
+    ) -> None:
+        self.params = params
+        self.domains = domains
+        self.body = body
+        self.heads = heads
+        self.absent = absent
+        self.equal = equal
+        self.unequal = unequal
+        self.mentions = mentions
 
 
 class Slots:
@@ -84,8 +104,7 @@ class Slots:
         return tuple(self.number[arg] for arg in args)
 
 
-@frozen
-class _Step:
+class _Step(Record):
     """Match ``facts`` on the ``key`` slots at ``positions``; each entry of ``free`` is
     ``(position, slot, domain, compare)``: bind the slot (checking the domain unless it is
     None) or, when ``compare``, test that it holds the value already bound."""
@@ -95,9 +114,22 @@ class _Step:
     key: tuple[int, ...]
     free: tuple[tuple[int, int, frozenset[str] | None, bool], ...]
 
+    __slots__ = ("facts", "positions", "key", "free")
 
-@frozen
-class _Plan:
+    def __init__(
+        self,
+        facts: FactIndex,
+        positions: tuple[int, ...],
+        key: tuple[int, ...],
+        free: tuple[tuple[int, int, frozenset[str] | None, bool], ...],
+    ) -> None:
+        self.facts = facts
+        self.positions = positions
+        self.key = key
+        self.free = free
+
+
+class _Plan(Record):
     """A way to complete a rule's binding: join ``steps``, then enumerate ``rest``."""
 
     rule: int
@@ -105,9 +137,22 @@ class _Plan:
     steps: tuple[_Step, ...]
     rest: tuple[tuple[int, tuple[str, ...]], ...]
 
+    __slots__ = ("rule", "trigger", "steps", "rest")
 
-@frozen
-class _Final:
+    def __init__(
+        self,
+        rule: int,
+        trigger: _Step | None,
+        steps: tuple[_Step, ...],
+        rest: tuple[tuple[int, tuple[str, ...]], ...],
+    ) -> None:
+        self.rule = rule
+        self.trigger = trigger
+        self.steps = steps
+        self.rest = rest
+
+
+class _Final(Record):
     """The tests and outputs of a rule once its binding is complete, as slot numbers."""
 
     params: int
@@ -115,6 +160,22 @@ class _Final:
     equal: tuple[tuple[int, int], ...]
     unequal: tuple[tuple[int, int], ...]
     heads: tuple[tuple[str, tuple[int, ...]], ...]
+
+    __slots__ = ("params", "absent", "equal", "unequal", "heads")
+
+    def __init__(
+        self,
+        params: int,
+        absent: tuple[tuple[FactIndex, tuple[int, ...]], ...],
+        equal: tuple[tuple[int, int], ...],
+        unequal: tuple[tuple[int, int], ...],
+        heads: tuple[tuple[str, tuple[int, ...]], ...],
+    ) -> None:
+        self.params = params
+        self.absent = absent
+        self.equal = equal
+        self.unequal = unequal
+        self.heads = heads
 
 
 class Reachability:

@@ -14,9 +14,7 @@ always has its derived facts evaluated.
 
 from __future__ import annotations
 
-from typing import Any
-
-from attrs import Factory, field, frozen
+from strips_framework.records import Record
 
 
 def mask_of(facts: tuple[int, ...]) -> int:
@@ -27,50 +25,56 @@ def mask_of(facts: tuple[int, ...]) -> int:
     return mask
 
 
-def _mask(of: str) -> Any:
-    """A field computed at construction: the bitset of the fact-number field ``of``."""
-    return field(
-        init=False, default=Factory(lambda self: mask_of(getattr(self, of)), takes_self=True)
-    )
-
-
-@frozen
-class GroundEffect:
+class GroundEffect(Record):
     """A conditional effect of a ground operator: when every fact of ``condition`` holds
     and none of ``condition_neg`` does in the state the operator is applied in, the
     ``add`` facts become true and the ``delete`` facts false."""
 
-    condition: tuple[int, ...]
-    condition_neg: tuple[int, ...]
-    add: tuple[int, ...]
-    delete: tuple[int, ...]
-    condition_mask: int = _mask("condition")
-    condition_neg_mask: int = _mask("condition_neg")
-    add_mask: int = _mask("add")
-    delete_mask: int = _mask("delete")
+    FIELDS = ("condition", "condition_neg", "add", "delete")
+    __slots__ = (*FIELDS, "condition_mask", "condition_neg_mask", "add_mask", "delete_mask")
+
+    def __init__(
+        self,
+        condition: tuple[int, ...],
+        condition_neg: tuple[int, ...],
+        add: tuple[int, ...],
+        delete: tuple[int, ...],
+    ) -> None:
+        self.condition, self.condition_neg, self.add, self.delete = condition, condition_neg, add, delete
+        self.condition_mask = mask_of(condition)
+        self.condition_neg_mask = mask_of(condition_neg)
+        self.add_mask = mask_of(add)
+        self.delete_mask = mask_of(delete)
 
     def fires(self, state: int) -> bool:
         mask = self.condition_mask
         return state & mask == mask and not state & self.condition_neg_mask
 
 
-@frozen
-class GroundOperator:
+class GroundOperator(Record):
     """One ground action. ``name`` is its IPC plan step, e.g. ``(pick-up a)``. ``add`` and
-    ``delete`` are its unconditional effects, ``effects`` the conditional ones."""
+    ``delete`` are its unconditional effects, ``effects`` the conditional ones;
+    ``pre_neg`` the facts that must be false (PDDL negative preconditions)."""
 
-    name: str
-    pre: tuple[int, ...]
-    add: tuple[int, ...]
-    delete: tuple[int, ...]
-    cost: int = 1
-    #: Facts that must be false (PDDL negative preconditions).
-    pre_neg: tuple[int, ...] = ()
-    effects: tuple[GroundEffect, ...] = ()
-    pre_mask: int = _mask("pre")
-    pre_neg_mask: int = _mask("pre_neg")
-    add_mask: int = _mask("add")
-    delete_mask: int = _mask("delete")
+    FIELDS = ("name", "pre", "add", "delete", "cost", "pre_neg", "effects")
+    __slots__ = (*FIELDS, "pre_mask", "pre_neg_mask", "add_mask", "delete_mask")
+
+    def __init__(
+        self,
+        name: str,
+        pre: tuple[int, ...],
+        add: tuple[int, ...],
+        delete: tuple[int, ...],
+        cost: int = 1,
+        pre_neg: tuple[int, ...] = (),
+        effects: tuple[GroundEffect, ...] = (),
+    ) -> None:
+        self.name, self.pre, self.add, self.delete = name, pre, add, delete
+        self.cost, self.pre_neg, self.effects = cost, pre_neg, effects
+        self.pre_mask = mask_of(pre)
+        self.pre_neg_mask = mask_of(pre_neg)
+        self.add_mask = mask_of(add)
+        self.delete_mask = mask_of(delete)
 
     def applicable(self, state: int) -> bool:
         return state & self.pre_mask == self.pre_mask and not state & self.pre_neg_mask
@@ -86,33 +90,53 @@ class GroundOperator:
         return (state & ~delete) | add
 
 
-@frozen
-class GroundAxiom:
+class GroundAxiom(Record):
     """``head`` holds when every fact of ``body`` holds and none of ``body_neg`` does.
     ``body_neg`` facts belong to strata below ``stratum``."""
 
     head: int
     body: tuple[int, ...]
-    body_neg: tuple[int, ...] = ()
-    stratum: int = 0
+    body_neg: tuple[int, ...]
+    stratum: int
+
+    __slots__ = ("head", "body", "body_neg", "stratum")
+
+    def __init__(
+        self,
+        head: int,
+        body: tuple[int, ...],
+        body_neg: tuple[int, ...] = (),
+        stratum: int = 0,
+    ) -> None:
+        self.head = head
+        self.body = body
+        self.body_neg = body_neg
+        self.stratum = stratum
 
 
-@frozen
-class GroundTask:
+class GroundTask(Record):
     """A ground planning task. ``goal`` is a conjunction of facts (a complex PDDL goal is
-    compiled to a derived fact); ``init`` is a state with its derived facts evaluated."""
+    compiled to a derived fact); ``init`` is a state with its derived facts evaluated.
+    ``derived`` are the facts only axioms make true; ``uses_costs`` is true when the task
+    minimizes total-cost (``:action-costs``), else cost = length."""
 
-    name: str
-    facts: tuple[str, ...]
-    operators: tuple[GroundOperator, ...]
-    init: int
-    goal: tuple[int, ...]
-    axioms: tuple[GroundAxiom, ...] = ()
-    #: Facts that only axioms make true.
-    derived: tuple[int, ...] = ()
-    #: True when the task minimizes total-cost (``:action-costs``); else cost = length.
-    uses_costs: bool = False
-    goal_mask: int = _mask("goal")
+    FIELDS = ("name", "facts", "operators", "init", "goal", "axioms", "derived", "uses_costs")
+    __slots__ = (*FIELDS, "goal_mask")
+
+    def __init__(
+        self,
+        name: str,
+        facts: tuple[str, ...],
+        operators: tuple[GroundOperator, ...],
+        init: int,
+        goal: tuple[int, ...],
+        axioms: tuple[GroundAxiom, ...] = (),
+        derived: tuple[int, ...] = (),
+        uses_costs: bool = False,
+    ) -> None:
+        self.name, self.facts, self.operators, self.init, self.goal = name, facts, operators, init, goal
+        self.axioms, self.derived, self.uses_costs = axioms, derived, uses_costs
+        self.goal_mask = mask_of(goal)
 
     def is_goal(self, state: int) -> bool:
         return state & self.goal_mask == self.goal_mask

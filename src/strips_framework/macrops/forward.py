@@ -15,8 +15,6 @@ from collections import defaultdict
 from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
-import attrs
-
 from strips_framework.grounding.task import GroundOperator, GroundTask
 from strips_framework.logic.terms import Param, Term
 from strips_framework.macrops.macrop import Library
@@ -56,12 +54,12 @@ def with_macros(
             if composed is None:
                 continue
             name = f"{MACRO_PREFIX}{macrop.name} {len(added)})"
-            added.append(attrs.evolve(composed, name=name))
+            added.append(composed._replace(name=name))
             steps_of[name] = tuple(op.name for op in chosen)
             count += 1
             if count >= per_macrop:
                 break
-    return attrs.evolve(task, operators=(*task.operators, *added)), steps_of
+    return task._replace(operators=(*task.operators, *added)), steps_of
 
 
 def solve_with_macros(
@@ -74,7 +72,7 @@ def solve_with_macros(
     if result.plan is None:
         return result
     steps = tuple(expand(result.plan, steps_of))
-    return attrs.evolve(result, plan=steps, cost=result.cost if task.uses_costs else len(steps))
+    return result._replace(plan=steps, cost=result.cost if task.uses_costs else len(steps))
 
 
 def expand(plan: Sequence[str], steps_of: dict[str, tuple[str, ...]]) -> list[str]:

@@ -18,9 +18,8 @@ import itertools
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.capabilities import ADMISSIBLE, ANSWERS, OPTIMAL, Requirement
+from strips_framework.options import Configurable, Option
 
 if TYPE_CHECKING:
     from strips_framework.limits import Clock, Limits
@@ -38,8 +37,7 @@ if TYPE_CHECKING:
     from strips_framework.worldmodel.world import WorldModel
 
 
-@frozen
-class ModelAStarSearch:
+class ModelAStarSearch(Configurable):
     """Forward A* (best-first on the evaluator's score) with duplicate detection.
 
     ``max_answers`` bounds the applicable instances taken from one precondition proof.
@@ -53,7 +51,11 @@ class ModelAStarSearch:
         Requirement("evaluator", ADMISSIBLE, "its first plan is a shortest one only then",
                     strict=False),
     )
-    max_answers: int = field(default=256, validator=[validators.instance_of(int), validators.gt(0)])
+    options = (
+        Option("max_answers", int, 256, minimum=0, exclusive_minimum=True,
+               doc="applicable instances taken from one precondition proof"),
+    )
+    max_answers: int
 
     def search(
         self,

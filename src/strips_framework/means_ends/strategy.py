@@ -13,9 +13,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.capabilities import ANSWERS, Requirement
+from strips_framework.options import Configurable, Option
 
 if TYPE_CHECKING:
     from strips_framework.limits import Clock, Limits
@@ -29,8 +28,7 @@ if TYPE_CHECKING:
     from strips_framework.worldmodel.proving import TheoremProver
 
 
-@frozen
-class MeansEndsSearch:
+class MeansEndsSearch(Configurable):
     """Means-ends analysis as STRIPS does it.
 
     ``max_goals`` bounds the goal list (the depth of subgoaling), which keeps the search
@@ -43,7 +41,11 @@ class MeansEndsSearch:
         Requirement("prover", ANSWERS, "it applies each operator with the parameter "
                     "bindings of its precondition's proof"),
     )
-    max_goals: int = field(default=8, validator=[validators.instance_of(int), validators.gt(0)])
+    options = (
+        Option("max_goals", int, 8, minimum=0, exclusive_minimum=True,
+               doc="the longest goal list (depth of subgoaling)"),
+    )
+    max_goals: int
 
     def search(
         self,

@@ -2,63 +2,103 @@
 
 Terms are plain strings: a variable starts with ``?``, anything else is an object (a
 constant). Equality is an :class:`Atom` with predicate ``=``. ``(and)`` is truth.
+
+Each node is a :class:`~strips_framework.records.Record` (no attrs on the PDDL path: it is
+built at every start-up); records compare by type too, so ``(and)`` never equals ``(or)``.
 """
 
 from __future__ import annotations
 
-from attrs import frozen
+from strips_framework.records import Record
 
 
-@frozen
-class Parameter:
+class Parameter(Record):
     """A typed variable or object; ``types`` has more than one entry for ``(either ...)``."""
 
     name: str
-    types: tuple[str, ...] = ("object",)
+    types: tuple[str, ...]
+
+    __slots__ = ("name", "types")
+
+    def __init__(self, name: str, types: tuple[str, ...] = ("object",)) -> None:
+        self.name = name
+        self.types = types
 
 
-@frozen
-class Atom:
+class Atom(Record):
     """``(predicate arg ...)``; also a numeric function application ``(f arg ...)``."""
 
     predicate: str
     args: tuple[str, ...]
 
+    __slots__ = ("predicate", "args")
+
+    def __init__(self, predicate: str, args: tuple[str, ...]) -> None:
+        self.predicate = predicate
+        self.args = args
+
     def __str__(self) -> str:
         return "(" + " ".join((self.predicate, *self.args)) + ")"
 
 
-@frozen
-class Not:
+class Not(Record):
     part: Formula
 
+    __slots__ = ("part",)
 
-@frozen
-class And:
+    def __init__(self, part: Formula) -> None:
+        self.part = part
+
+
+class And(Record):
     parts: tuple[Formula, ...]
 
+    __slots__ = ("parts",)
 
-@frozen
-class Or:
+    def __init__(self, parts: tuple[Formula, ...]) -> None:
+        self.parts = parts
+
+
+class Or(Record):
     parts: tuple[Formula, ...]
 
+    __slots__ = ("parts",)
 
-@frozen
-class Imply:
+    def __init__(self, parts: tuple[Formula, ...]) -> None:
+        self.parts = parts
+
+
+class Imply(Record):
     condition: Formula
     consequence: Formula
 
+    __slots__ = ("condition", "consequence")
 
-@frozen
-class Exists:
+    def __init__(self, condition: Formula, consequence: Formula) -> None:
+        self.condition = condition
+        self.consequence = consequence
+
+
+class Exists(Record):
     params: tuple[Parameter, ...]
     body: Formula
 
+    __slots__ = ("params", "body")
 
-@frozen
-class Forall:
+    def __init__(self, params: tuple[Parameter, ...], body: Formula) -> None:
+        self.params = params
+        self.body = body
+
+
+class Forall(Record):
     params: tuple[Parameter, ...]
     body: Formula
+
+    __slots__ = ("params", "body")
+
+    def __init__(self, params: tuple[Parameter, ...], body: Formula) -> None:
+        self.params = params
+        self.body = body
 
 
 Formula = Atom | Not | And | Or | Imply | Exists | Forall

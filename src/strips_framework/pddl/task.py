@@ -5,23 +5,26 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from attrs import field, frozen
-
 from strips_framework.errors import InputError
 from strips_framework.pddl.formulas import Atom, Formula, Parameter
+from strips_framework.records import Record
 
 #: An action's cost: a number, or a numeric function term whose value the problem's init gives.
 Cost = int | Atom
 
 
-@frozen
-class Predicate:
+class Predicate(Record):
     name: str
     params: tuple[Parameter, ...]
 
+    __slots__ = ("name", "params")
 
-@frozen
-class ConditionalEffect:
+    def __init__(self, name: str, params: tuple[Parameter, ...]) -> None:
+        self.name = name
+        self.params = params
+
+
+class ConditionalEffect(Record):
     """``(forall (params) (when condition effect))``: for every binding of ``params`` to
     objects under which ``condition`` holds in the state the action is applied in, the
     ``add`` atoms become true and the ``delete`` atoms false. A universal effect without
@@ -32,9 +35,22 @@ class ConditionalEffect:
     add: tuple[Atom, ...]
     delete: tuple[Atom, ...]
 
+    __slots__ = ("params", "condition", "add", "delete")
 
-@frozen
-class Action:
+    def __init__(
+        self,
+        params: tuple[Parameter, ...],
+        condition: Formula,
+        add: tuple[Atom, ...],
+        delete: tuple[Atom, ...],
+    ) -> None:
+        self.params = params
+        self.condition = condition
+        self.add = add
+        self.delete = delete
+
+
+class Action(Record):
     """A lifted action: the unconditional STRIPS add/delete effects, the conditional and
     universal ones (``when``, ``forall``), and an optional ``total-cost`` increase. All
     conditions are evaluated in the state before the action; deletes apply before adds."""
@@ -44,9 +60,31 @@ class Action:
     precondition: Formula
     add: tuple[Atom, ...]
     delete: tuple[Atom, ...]
-    cost: Cost | None = None
-    line: int = 0
-    conditional: tuple[ConditionalEffect, ...] = ()
+    cost: Cost | None
+    line: int
+    conditional: tuple[ConditionalEffect, ...]
+
+    __slots__ = ("name", "params", "precondition", "add", "delete", "cost", "line", "conditional")
+
+    def __init__(
+        self,
+        name: str,
+        params: tuple[Parameter, ...],
+        precondition: Formula,
+        add: tuple[Atom, ...],
+        delete: tuple[Atom, ...],
+        cost: Cost | None = None,
+        line: int = 0,
+        conditional: tuple[ConditionalEffect, ...] = (),
+    ) -> None:
+        self.name = name
+        self.params = params
+        self.precondition = precondition
+        self.add = add
+        self.delete = delete
+        self.cost = cost
+        self.line = line
+        self.conditional = conditional
 
     def changed_atoms(self) -> Iterator[Atom]:
         """Every atom an effect of the action may add or delete."""
@@ -57,17 +95,22 @@ class Action:
             yield from effect.delete
 
 
-@frozen
-class DerivedPredicate:
+class DerivedPredicate(Record):
     """``(:derived (head ?x ...) body)``: the head holds exactly when the body does."""
 
     head: Atom
     params: tuple[Parameter, ...]
     body: Formula
 
+    __slots__ = ("head", "params", "body")
 
-@frozen
-class Domain:
+    def __init__(self, head: Atom, params: tuple[Parameter, ...], body: Formula) -> None:
+        self.head = head
+        self.params = params
+        self.body = body
+
+
+class Domain(Record):
     name: str
     requirements: tuple[str, ...]
     #: ``(type, parent)`` pairs; ``object`` is the root and needs no entry.
@@ -78,9 +121,39 @@ class Domain:
     actions: tuple[Action, ...]
     derived: tuple[DerivedPredicate, ...]
 
+    __slots__ = (
+        "name",
+        "requirements",
+        "types",
+        "constants",
+        "predicates",
+        "functions",
+        "actions",
+        "derived",
+    )
 
-@frozen
-class Problem:
+    def __init__(
+        self,
+        name: str,
+        requirements: tuple[str, ...],
+        types: tuple[tuple[str, str], ...],
+        constants: tuple[Parameter, ...],
+        predicates: tuple[Predicate, ...],
+        functions: tuple[str, ...],
+        actions: tuple[Action, ...],
+        derived: tuple[DerivedPredicate, ...],
+    ) -> None:
+        self.name = name
+        self.requirements = requirements
+        self.types = types
+        self.constants = constants
+        self.predicates = predicates
+        self.functions = functions
+        self.actions = actions
+        self.derived = derived
+
+
+class Problem(Record):
     name: str
     domain_name: str
     objects: tuple[Parameter, ...]
@@ -90,6 +163,26 @@ class Problem:
     goal: Formula
     #: ``(:metric minimize (total-cost))``.
     minimize_cost: bool
+
+    __slots__ = ("name", "domain_name", "objects", "init", "numeric", "goal", "minimize_cost")
+
+    def __init__(
+        self,
+        name: str,
+        domain_name: str,
+        objects: tuple[Parameter, ...],
+        init: tuple[Atom, ...],
+        numeric: tuple[tuple[Atom, int], ...],
+        goal: Formula,
+        minimize_cost: bool,
+    ) -> None:
+        self.name = name
+        self.domain_name = domain_name
+        self.objects = objects
+        self.init = init
+        self.numeric = numeric
+        self.goal = goal
+        self.minimize_cost = minimize_cost
 
 
 def _objects_by_type(domain: Domain, problem: Problem) -> dict[str, tuple[str, ...]]:
@@ -118,20 +211,32 @@ def _objects_by_type(domain: Domain, problem: Problem) -> dict[str, tuple[str, .
     return {kind: tuple(sorted(names)) for kind, names in members.items()}
 
 
-@frozen
 class PddlTask:
     """A domain and a problem, with the files they came from (for messages)."""
 
-    domain: Domain
-    problem: Problem
-    domain_path: str = ""
-    problem_path: str = ""
-    #: Every type's objects (including subtypes' objects), sorted.
-    objects_by_type: dict[str, tuple[str, ...]] = field(init=False, eq=False, repr=False)
+    __slots__ = ("domain", "problem", "domain_path", "problem_path", "objects_by_type")
 
-    @objects_by_type.default
-    def _objects_by_type_default(self) -> dict[str, tuple[str, ...]]:
-        return _objects_by_type(self.domain, self.problem)
+    def __init__(
+        self, domain: Domain, problem: Problem, domain_path: str = "", problem_path: str = ""
+    ) -> None:
+        self.domain = domain
+        self.problem = problem
+        self.domain_path = domain_path
+        self.problem_path = problem_path
+        #: Every type's objects (including subtypes' objects), sorted.
+        self.objects_by_type = _objects_by_type(domain, problem)
+
+    def _key(self) -> tuple[Domain, Problem, str, str]:
+        return (self.domain, self.problem, self.domain_path, self.problem_path)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, PddlTask) and other._key() == self._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def __repr__(self) -> str:
+        return f"PddlTask({self.name!r}, {self.domain_path!r}, {self.problem_path!r})"
 
     def objects_of(self, types: tuple[str, ...]) -> tuple[str, ...]:
         """The objects of any of ``types`` (one type, or the members of ``(either ...)``)."""

@@ -43,12 +43,11 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-import attrs
-from attrs import frozen
-
 from strips_framework.errors import ConfigError, PluginError
 from strips_framework.limits import Limits
+from strips_framework.options import OptionError, declared_options, type_words
 from strips_framework.plugin.registry import KINDS, Registration, Registry
+from strips_framework.records import Record
 from strips_framework.user_files import KeyLines, read_toml_with_keys
 
 COMPONENTS = (
@@ -75,25 +74,48 @@ PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
 TABLE_OF = {"ground-strategy": "strategy"}
 
 
-@frozen
-class Choice:
+class Choice(Record):
     """An implementation picked by name, with the options to build it."""
 
     kind: str
     name: str
-    options: dict[str, Any] = attrs.field(factory=dict)
+    options: dict[str, Any]
+
+    __slots__ = ("kind", "name", "options")
+
+    def __init__(self, kind: str, name: str, options: dict[str, Any] = {}) -> None:
+        self.kind = kind
+        self.name = name
+        self.options = options
 
 
-@frozen
-class Config:
+class Config(Record):
+    """What a config file (or the defaults) chose: read it with :meth:`from_file`."""
+
     choices: dict[str, Choice]
     limits: Limits
     #: The file the config came from, and where its keys are written (for messages).
-    source: KeyLines = attrs.field(factory=lambda: KeyLines("<defaults>"))
+    source: KeyLines
     #: The kinds the config file chose itself (the others took their defaults).
-    chosen: frozenset[str] = frozenset()
+    chosen: frozenset[str]
     #: The tables of :data:`SECTIONS`, as written (read by the commands that use them).
-    sections: dict[str, dict[str, Any]] = attrs.field(factory=dict)
+    sections: dict[str, dict[str, Any]]
+
+    __slots__ = ("choices", "limits", "source", "chosen", "sections")
+
+    def __init__(
+        self,
+        choices: dict[str, Choice],
+        limits: Limits,
+        source: KeyLines = KeyLines("<defaults>"),
+        chosen: frozenset[str] = frozenset(),
+        sections: dict[str, dict[str, Any]] = {},
+    ) -> None:
+        self.choices = choices
+        self.limits = limits
+        self.source = source
+        self.chosen = chosen
+        self.sections = sections
 
     @classmethod
     def default(cls) -> Config:
@@ -151,7 +173,7 @@ class Config:
         if "strategy" in self.chosen or self.choices["strategy"].name == PDDL_DEFAULT_STRATEGY:
             return self
         choices = {**self.choices, "strategy": Choice("strategy", PDDL_DEFAULT_STRATEGY)}
-        return attrs.evolve(self, choices=choices)
+        return self._replace(choices=choices)
 
     def table_of(self, kind: str) -> str:
         """The config table that chooses the implementation of plugin kind ``kind``."""
@@ -206,12 +228,8 @@ class Config:
             raise PluginError(f"{self.source.at(table + '.name')}: '{table}.name': {error}") from None
 
 
-_NAMES = {dict: "a table", list: "an array", str: "a string", bool: "a boolean",
-          int: "an integer", float: "a float"}
-
-
 def _type_name(value: object) -> str:
-    return _NAMES.get(type(value), type(value).__name__)
+    return type_words((type(value),))
 
 
 def _instantiate(
@@ -223,18 +241,17 @@ def _instantiate(
 ) -> Any:
     """``cls(**options)``, with wrong keys and values reported by key path."""
     what = f"{KINDS[registration.kind][1]} '{registration.name}'" if registration else f"'{path}'"
-    fields = {a.name: a for a in attrs.fields(cls) if a.init} if attrs.has(cls) else {}
+    defaults = declared_options(cls)
     for key in options:
-        if key not in fields:
-            expected = ", ".join(sorted(fields)) or "none"
+        if key not in defaults:
+            expected = ", ".join(sorted(defaults)) or "none"
             raise ConfigError(
                 f"{source.at(path + '.' + key)}: unknown key '{path}.{key}': {what} has no "
                 f"option '{key}' "
                 f"(options: {expected})"
             )
     for key, value in options.items():
-        default = fields[key].default
-        if type(default) is float and type(value) is int:
+        if type(defaults[key]) is float and type(value) is int:
             options = {**options, key: float(value)}
     try:
         return cls(**options)
@@ -247,15 +264,17 @@ def _instantiate(
 def _explain(
     error: TypeError | ValueError, path: str, options: dict[str, Any]
 ) -> tuple[str | None, str]:
-    """The key and ``'path.key': what was expected (got value)`` from an attrs
-    validator's error.
+    """The key and ``'path.key': what was expected (got value)`` from a declared option's
+    :class:`~strips_framework.options.OptionError` or an attrs validator's error.
 
     attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``
     and ``in_`` ``ValueError(message, attribute, options, value)``; other validators raise
     with a message naming the attribute in quotes.
     """
+    if isinstance(error, OptionError):
+        return error.option, f"'{path}.{error.option}': {error.explanation}"
     args = error.args
-    attribute = next((a for a in args if isinstance(a, attrs.Attribute)), None)
+    attribute = next((a for a in args if type(a).__name__ == "Attribute"), None)
     key = attribute.name if attribute else next(
         (k for k in options if f"'{k}'" in str(args[0])), None
     )
@@ -265,7 +284,6 @@ def _explain(
         if not all(isinstance(t, type) for t in expected):  # attrs' ``in_``: the values
             values = ", ".join(repr(v) for v in expected)
             return key, f"{where}: expected one of {values}, got {args[3]!r}"
-        names = " or ".join(_type_name(t()) if t in _NAMES else t.__name__ for t in expected)
-        return key, f"{where}: expected {names}, got {_type_name(args[3])} {args[3]!r}"
+        return key, f"{where}: expected {type_words(expected)}, got {_type_name(args[3])} {args[3]!r}"
     got = f" (got {options[key]!r})" if key in options else ""
     return key, f"{where}: {args[0]}{got}"

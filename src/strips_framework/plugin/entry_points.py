@@ -32,21 +32,21 @@ EntryPoint = tuple[str, str, str]
 
 def entry_points(group: str) -> list[EntryPoint]:
     """The entry points of ``group`` in the order :mod:`importlib.metadata` lists them."""
-    cache = _cache_file(group)
+    cache = cache_file(f"entry-points-{group}")
     # The signature's lines hold no blank line: one ends it in the file.
-    signature = _signature() + "\n\n"
+    stamp = signature() + "\n\n"
     if cache is not None:
         try:
             text = cache.read_text(encoding="utf-8")
         except OSError:
             text = ""
-        if text.startswith(signature):
-            rows = text[len(signature) :].splitlines()
+        if text.startswith(stamp):
+            rows = text[len(stamp) :].splitlines()
             return [tuple(row.split("\t")) for row in rows]  # type: ignore[misc]
     found = _read_metadata(group)
     if cache is not None:
         rows = "".join(f"{name}\t{value}\t{dist}\n" for name, value, dist in found)
-        _write(cache, signature + rows)
+        write(cache, stamp + rows)
     return found
 
 
@@ -72,17 +72,18 @@ def _read_metadata(group: str) -> list[EntryPoint]:
     return found
 
 
-def _cache_file(group: str) -> Path | None:
+def cache_file(stem: str) -> Path | None:
+    """The cache file ``stem`` of this Python installation (``None``: no cache folder)."""
     base = os.environ.get(CACHE_ENV) or os.path.join(os.path.expanduser("~"), ".cache")
     if not os.path.isabs(base):
         return None
     # One file per Python installation (each virtual environment has its own), so that
     # several of them do not keep overwriting one another's.
     installation = zlib.crc32(sys.prefix.encode())
-    return Path(base, "strips-framework", f"entry-points-{group}-{installation:08x}.txt")
+    return Path(base, "strips-framework", f"{stem}-{installation:08x}.txt")
 
 
-def _signature() -> str:
+def signature() -> str:
     """What is installed, as far as entry points can tell (see the module docstring)."""
     parts = [sys.version.replace("\n", " ")]
     for entry in sys.path:
@@ -102,7 +103,7 @@ def _signature() -> str:
     return "\n".join(parts)
 
 
-def _write(path: Path, text: str) -> None:
+def write(path: Path, text: str) -> None:
     """Write ``path`` atomically (a concurrent reader sees the old file or the new one);
     an unwritable cache is no error, only slower."""
     try:

@@ -1,30 +1,30 @@
-"""The plugin manager and the registry of implementations it collects.
+"""The registry of implementations the plugins' hooks register.
 
 Builtin implementations are registered exactly like outside ones: each module in
 :data:`DEFAULT_PLUGINS` holds ``@hookimpl`` functions, as an installed distribution's
-entry-point module in the group ``strips_framework`` does (the installed entry points come
-from :mod:`strips_framework.plugin.entry_points`, which caches them by what is installed, so a
-run does not pay for :mod:`importlib.metadata`). Nothing is loaded at import
-time; :func:`get_plugin_manager` builds a fresh manager on each call, and the
+entry-point module in the group ``strips_framework`` does; the pluggy manager that collects
+them is :mod:`strips_framework.plugin.manager`. Nothing is loaded at import time: the
 :class:`Registry` calls a kind's hook only when that kind is first looked up (a plugin
-module that imports its classes inside its hooks costs nothing until then). Set
+module that imports its classes inside its hooks costs nothing until then), and
+:meth:`Registry.from_plugins` reads what the installed plugins registered from
+:mod:`strips_framework.plugin.registry_cache` when nothing changed since, importing
+neither pluggy nor any plugin, and each class only when it is looked up. Set
 ``STRIPS_DISABLE_PLUGIN_AUTOLOAD=1`` to skip installed distributions (tests use it).
 """
 
 from __future__ import annotations
 
-import importlib
 import os
-import traceback
 import warnings
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
-import attrs
-import pluggy
-from attrs import frozen
-
+from strips_framework import options
 from strips_framework.errors import PluginError
-from strips_framework.plugin import entry_points, hookspecs
+from strips_framework.plugin import registry_cache
+
+if TYPE_CHECKING:
+    from strips_framework.plugin.manager import PluginManager
 
 DEFAULT_PLUGINS = ("strips_framework.plugin.builtins",)
 
@@ -63,81 +63,46 @@ KNOWN_PROVIDERS = {
 AUTOLOAD_SWITCH = "STRIPS_DISABLE_PLUGIN_AUTOLOAD"
 
 
-class PluginManager(pluggy.PluginManager):
-    """pluggy's manager, plus the distribution each installed plugin came from."""
-
-    def __init__(self) -> None:
-        super().__init__(hookspecs.PROJECT)
-        self.add_hookspecs(hookspecs)
-        #: Plugin name -> the name of the distribution that installed it.
-        self.distributions: dict[str, str] = {}
-
-    def load_installed(self) -> None:
-        """Register every installed plugin (entry points in the group ``strips_framework``,
-        from the cached list of :mod:`.entry_points`) one at a time, as pluggy's
-        ``load_setuptools_entrypoints`` does (a name already registered or blocked is
-        skipped). A plugin that cannot be imported, or that implements a hook that does not
-        exist (a misspelling), is left out with a warning naming it and its distribution:
-        one broken third-party plugin must not disable every command, ``strips plugins``
-        included."""
-        for name, value, distribution in entry_points.entry_points(hookspecs.PROJECT):
-            if self.has_plugin(name) or self.is_blocked(name):
-                continue
-            try:
-                self.register(entry_points.load(value), name=name)
-                self.check_pending()
-            except Exception as error:  # noqa: BLE001 - third-party code, any failure
-                if self.has_plugin(name):
-                    self.unregister(name=name)
-                warnings.warn(
-                    f"plugin {name!r} (from {distribution}) failed to load and is left out: "
-                    f"{type(error).__name__}: {error}",
-                    stacklevel=2,
-                )
-                continue
-            self.distributions[name] = distribution
-
-
-def get_plugin_manager(
-    extra_plugins: Iterable[object] = (), load_entrypoints: bool | None = None
-) -> PluginManager:
-    """A new plugin manager with the builtins, installed plugins and ``extra_plugins``
-    (a mistake in ``extra_plugins``, the caller's own, is an error)."""
-    manager = PluginManager()
-    for module_name in DEFAULT_PLUGINS:
-        manager.register(importlib.import_module(module_name), name=module_name)
-    if load_entrypoints is None:
-        load_entrypoints = not os.environ.get(AUTOLOAD_SWITCH)
-    if load_entrypoints:
-        manager.load_installed()
-    for plugin in extra_plugins:
-        manager.register(plugin)
-    manager.check_pending()
-    return manager
-
-
-@frozen
 class Registration:
-    """One implementation class and where it came from."""
+    """One implementation class and where it came from. ``cls`` is the class, or
+    ``(module, qualified name)`` to import it from when it is first used (a registration
+    read from the cache)."""
 
-    kind: str
-    name: str
-    cls: type
-    plugin: str
-    distribution: str | None
+    __slots__ = ("kind", "name", "_cls", "plugin", "distribution")
+
+    def __init__(
+        self, kind: str, name: str, cls: type | tuple[str, str], plugin: str, distribution: str | None
+    ) -> None:
+        self.kind, self.name, self._cls = kind, name, cls
+        self.plugin, self.distribution = plugin, distribution
+
+    @property
+    def cls(self) -> type:
+        if isinstance(self._cls, tuple):
+            self._cls = registry_cache.resolve(*self._cls)
+        return self._cls
+
+    @property
+    def module(self) -> str:
+        """The module that defines the class (without importing it)."""
+        return self._cls[0] if isinstance(self._cls, tuple) else self._cls.__module__
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Registration) and other._key() == self._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def _key(self) -> tuple[object, ...]:
+        return (self.kind, self.name, self.cls, self.plugin, self.distribution)
+
+    def __repr__(self) -> str:
+        return f"Registration({self.kind!r}, {self.name!r}, {self.cls!r}, {self.plugin!r})"
 
     def options(self) -> list[tuple[str, object]]:
-        """The class's options (its attrs init fields) with their default values."""
-        if not attrs.has(self.cls):
-            return []
-        options = []
-        for field in attrs.fields(self.cls):
-            if field.init:
-                default = field.default
-                if isinstance(default, attrs.Factory):  # type: ignore[arg-type]
-                    default = default.factory()
-                options.append((field.name, default))
-        return options
+        """The class's options (:func:`strips_framework.options.declared_options`) with their
+        default values."""
+        return list(options.declared_options(self.cls).items())
 
     @property
     def suffixes(self) -> tuple[str, ...]:
@@ -149,9 +114,15 @@ class Registry:
     """Implementation classes by kind and name, as the hooks registered them; each kind's
     hook is called the first time the kind is looked up."""
 
-    def __init__(self, manager: PluginManager) -> None:
+    def __init__(
+        self, manager: PluginManager | None, cached: dict[str, dict[str, Registration]] | None = None
+    ) -> None:
+        """A registry over ``manager``'s hooks, or holding the ``cached`` registrations
+        of every kind (then ``manager`` is ``None``)."""
         self._manager = manager
-        self._by_kind: dict[str, dict[str, Registration]] = {}
+        self._by_kind: dict[str, dict[str, Registration]] = dict(cached or {})
+        #: False once a plugin's hook raised (its classes are missing).
+        self.complete = True
 
     def _kind(self, kind: str) -> dict[str, Registration]:
         """The registrations of ``kind``, collected from its hook on first use. A plugin
@@ -159,6 +130,8 @@ class Registry:
         found = self._by_kind.get(kind)
         if found is not None:
             return found
+        if self._manager is None:  # from the cache, which holds every kind
+            return {}
         hook_name, words, _ = KINDS[kind]
         found = {}
         caller = getattr(self._manager.hook, hook_name)
@@ -166,6 +139,7 @@ class Registry:
             try:
                 classes = list(impl.function() or ())
             except Exception as error:  # noqa: BLE001 - third-party code, any failure
+                self.complete = False
                 warnings.warn(
                     f"plugin {impl.plugin_name!r} failed to register its {KINDS[kind][2]} "
                     f"and is left out of them: {type(error).__name__}: {error}",
@@ -195,14 +169,18 @@ class Registry:
         the innermost frame of the traceback that is a method of a registered class from
         outside the core, or code in the module that defines one (a heuristic's estimator
         beside its heuristic). ``None`` for errors in the core's own code."""
+        import traceback  # only on the way to an error message
+
         plugged = [
             registration
             for found in self._by_kind.values()
             for registration in found.values()
-            if not registration.cls.__module__.startswith("strips_framework.")
+            if not registration.module.startswith("strips_framework.")
         ]
-        classes = {registration.cls: registration for registration in plugged}
-        modules = {registration.cls.__module__: registration for registration in plugged}
+        # A class still to be imported from the cache has no instance yet: its module is
+        # enough, and importing every class on the way to an error message is not.
+        classes = {r._cls: r for r in plugged if isinstance(r._cls, type)}
+        modules = {registration.module: registration for registration in plugged}
         frames = list(traceback.walk_tb(error.__traceback__))
         for frame, _ in reversed(frames):
             registration = classes.get(type(frame.f_locals.get("self"))) or modules.get(
@@ -215,7 +193,48 @@ class Registry:
 
     @classmethod
     def from_plugins(cls, extra_plugins: Iterable[object] = ()) -> Registry:
-        return cls(get_plugin_manager(extra_plugins))
+        """The registry of the builtins, the installed plugins (unless
+        ``STRIPS_DISABLE_PLUGIN_AUTOLOAD`` is set) and ``extra_plugins``; without extra
+        plugins, read from the cache when the installation is unchanged, and cached
+        otherwise (see :mod:`strips_framework.plugin.registry_cache`)."""
+        extra = list(extra_plugins)
+        autoload = not os.environ.get(AUTOLOAD_SWITCH)
+        if not extra:
+            rows = registry_cache.load(autoload)
+            if rows is not None:
+                cached: dict[str, dict[str, Registration]] = {kind: {} for kind in KINDS}
+                for kind, name, module, qualname, plugin, distribution in rows:
+                    registration = Registration(kind, name, (module, qualname), plugin, distribution or None)
+                    cached[kind][name] = registration
+                return cls(None, cached)
+        from strips_framework.plugin.manager import get_plugin_manager
+
+        registry = cls(get_plugin_manager(extra))
+        if not extra:
+            registry._cache(autoload)
+        return registry
+
+    def _cache(self, autoload: bool) -> None:
+        """Write every kind's registrations to the cache, unless a plugin failed to load
+        or to register (the next run then tries again, and warns again), or a class
+        cannot be found again by name. Collected in a registry of their own, quietly:
+        this one stays lazy, and warns when the run looks a failing kind up."""
+        assert self._manager is not None
+        every = Registry(self._manager)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            kinds = [every._kind(kind) for kind in KINDS]
+        if not every.complete or self._manager.failed:
+            return
+        rows = []
+        for found in kinds:
+            for r in found.values():
+                row = registry_cache.row_of(r.kind, r.name, r.cls, r.plugin, r.distribution)
+                if row is None:
+                    return
+                rows.append(row)
+        plugins = [getattr(plugin, "__name__", type(plugin).__module__) for plugin in self._manager.get_plugins()]
+        registry_cache.store(autoload, rows, [*plugins, *(row[2] for row in rows)])
 
     def names(self, kind: str) -> list[str]:
         return sorted(self._kind(kind))

@@ -1,9 +1,10 @@
 """Checks every implementation class must pass, whatever its kind.
 
-The config builds implementations from TOML by keyword; it relies on the class being an
-attrs class with a ``name``, constructible with its options, which refuse wrong
-values with ``TypeError``/``ValueError`` (which the config turns into a message naming
-the key). The capabilities a class declares are what the config checks combinations by
+The config builds implementations from TOML by keyword; it relies on the class having a
+``name`` and declared options (a :class:`~strips_framework.options.Configurable`'s
+``options``, or an attrs class's fields), being constructible with them, and refusing
+wrong values with ``TypeError``/``ValueError`` (which the config turns into a message
+naming the key). The capabilities a class declares are what the config checks combinations by
 and what the kit holds it to, so they must be declared and spelled as in the vocabulary.
 """
 
@@ -13,9 +14,8 @@ from collections.abc import Mapping
 from types import MappingProxyType
 from typing import Any
 
-import attrs
-
 from strips_framework.capabilities import VOCABULARY, declared, requirements, unknown
+from strips_framework.options import Configurable, declared_options
 from strips_framework.plugin.registry import KINDS
 
 
@@ -26,15 +26,16 @@ class ConformanceFailure(AssertionError):
 def check_declaration(
     cls: type, kind: str, options: Mapping[str, Any] = MappingProxyType({})
 ) -> frozenset[str]:
-    """The capabilities ``cls`` declares, after checking its name, attrs form, that
+    """The capabilities ``cls`` declares, after checking its name, declared options, that
     ``cls(**options)`` works, its capability words and its requirements."""
     name = getattr(cls, "name", None)
     if not isinstance(name, str) or not name:
         raise ConformanceFailure(f"{cls.__qualname__} has no 'name' class attribute (a string)")
-    if not attrs.has(cls):
+    if not issubclass(cls, Configurable) and not hasattr(cls, "__attrs_attrs__"):
         raise ConformanceFailure(
-            f"{name!r}: {cls.__qualname__} is not an attrs class; its options must be attrs "
-            "fields so the config can pass them by keyword and 'strips plugins' can list them"
+            f"{name!r}: {cls.__qualname__} declares no options: derive it from "
+            "strips_framework.options.Configurable (or make it an attrs class) so the config "
+            "can pass them by keyword and 'strips plugins' can list them"
         )
     try:
         cls(**options)
@@ -76,19 +77,18 @@ def check_options_refuse_wrong_values(
     """Each option given a value of no sensible type raises ``TypeError``/``ValueError``,
     which the config reports as 'bad value for KEY'; anything else would be a traceback
     or, worse, a silently broken run."""
-    for field in attrs.fields(cls):
-        if not field.init:
-            continue
+    for option in declared_options(cls):
         try:
-            cls(**{**options, field.alias: _Wrong()})
+            cls(**{**options, option: _Wrong()})
         except (TypeError, ValueError):
             continue
         except Exception as error:
             raise ConformanceFailure(
-                f"{cls.name!r}: option {field.name!r} given a wrong value raises "
+                f"{cls.name!r}: option {option!r} given a wrong value raises "
                 f"{type(error).__name__} ({error}); it must raise TypeError or ValueError"
             ) from error
         raise ConformanceFailure(
-            f"{cls.name!r}: option {field.name!r} accepts {_Wrong()!r}; give it a validator "
-            "(e.g. attrs.validators.instance_of) so a config mistake is reported by key"
+            f"{cls.name!r}: option {option!r} accepts {_Wrong()!r}; declare its type "
+            "(strips_framework.options.Option, or an attrs validator such as instance_of) so "
+            "a config mistake is reported by key"
         )

@@ -10,18 +10,24 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-@frozen
-class AdditiveEstimator:
+class AdditiveEstimator(Record):
     explorer: Explorer
     goal_mask: int
+
+    __slots__ = ("explorer", "goal_mask")
+
+    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
+        self.explorer = explorer
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         if state & self.goal_mask == self.goal_mask:
@@ -32,8 +38,7 @@ class AdditiveEstimator:
         return self.estimate(state), ()
 
 
-@frozen
-class AdditiveHeuristic:
+class AdditiveHeuristic(Configurable):
     """hadd: the sum of the goal facts' relaxed costs. Not admissible.
 
     Each fact costs its cheapest achiever's cost plus the sum of its preconditions'

@@ -5,16 +5,22 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from attrs import frozen
 
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-@frozen
-class BlindEstimator:
+class BlindEstimator(Record):
     goal_mask: int
     #: What any step from a non-goal state costs at least (``math.inf`` with no operators).
     min_cost: float
+
+    __slots__ = ("goal_mask", "min_cost")
+
+    def __init__(self, goal_mask: int, min_cost: float) -> None:
+        self.goal_mask = goal_mask
+        self.min_cost = min_cost
 
     def estimate(self, state: int) -> float:
         return 0 if state & self.goal_mask == self.goal_mask else self.min_cost
@@ -23,8 +29,7 @@ class BlindEstimator:
         return self.estimate(state), ()
 
 
-@frozen
-class BlindHeuristic:
+class BlindHeuristic(Configurable):
     """Blind: 0 at a goal, else the cheapest operator's cost. Admissible, no guidance.
 
     A non-goal state needs at least one more step, so the cheapest operator's cost (1 on

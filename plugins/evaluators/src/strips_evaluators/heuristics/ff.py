@@ -13,19 +13,25 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-@frozen
-class FFEstimator:
+class FFEstimator(Record):
     explorer: Explorer
     goal_mask: int
+
+    __slots__ = ("explorer", "goal_mask")
+
+    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
+        self.explorer = explorer
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         if state & self.goal_mask == self.goal_mask:
@@ -38,8 +44,7 @@ class FFEstimator:
         return self.explorer.preferred(state)
 
 
-@frozen
-class FFHeuristic:
+class FFHeuristic(Configurable):
     """hFF: cost of a relaxed plan from hadd best supporters; preferred operators.
 
     As Fast Downward's ``ff()``: each operator of the relaxed plan counts once, so it is

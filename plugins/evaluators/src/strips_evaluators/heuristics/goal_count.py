@@ -4,14 +4,19 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
 
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-@frozen
-class GoalCountEstimator:
+class GoalCountEstimator(Record):
     goal_mask: int
+
+    __slots__ = ("goal_mask",)
+
+    def __init__(self, goal_mask: int) -> None:
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         return (self.goal_mask & ~state).bit_count()
@@ -20,8 +25,7 @@ class GoalCountEstimator:
         return (self.goal_mask & ~state).bit_count(), ()
 
 
-@frozen
-class GoalCountHeuristic:
+class GoalCountHeuristic(Configurable):
     """Goal count: the goal facts false in the state. Not admissible.
 
     One bit count per state, so the cheapest informed heuristic. It overestimates when one

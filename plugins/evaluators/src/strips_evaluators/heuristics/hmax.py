@@ -10,18 +10,24 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import Explorer, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-@frozen
-class MaxEstimator:
+class MaxEstimator(Record):
     explorer: Explorer
     goal_mask: int
+
+    __slots__ = ("explorer", "goal_mask")
+
+    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
+        self.explorer = explorer
+        self.goal_mask = goal_mask
 
     def estimate(self, state: int) -> float:
         if state & self.goal_mask == self.goal_mask:
@@ -32,8 +38,7 @@ class MaxEstimator:
         return self.estimate(state), ()
 
 
-@frozen
-class MaxHeuristic:
+class MaxHeuristic(Configurable):
     """hmax: the costliest goal fact in the delete relaxation. Admissible.
 
     Each fact costs its cheapest achiever's cost plus the achiever's costliest

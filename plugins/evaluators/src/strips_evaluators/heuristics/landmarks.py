@@ -18,14 +18,13 @@ landmark achieved earlier is required again.
 
 from __future__ import annotations
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in
 from strips_framework.grounding.task import mask_of
+from strips_framework.records import Record
 
 
-@frozen
-class LandmarkGraph:
+class LandmarkGraph(Record):
     """Landmarks of a task from its initial state, as bitsets over fact numbers."""
 
     #: The landmarks (artificial and derived facts left out: no operator achieves them).
@@ -38,6 +37,22 @@ class LandmarkGraph:
     achievers: list[list[int]]
     #: False when some goal fact is unreachable even in the relaxation.
     solvable: bool
+
+    __slots__ = ("landmarks", "label", "necessary", "achievers", "solvable")
+
+    def __init__(
+        self,
+        landmarks: int,
+        label: list[int],
+        necessary: list[int],
+        achievers: list[list[int]],
+        solvable: bool,
+    ) -> None:
+        self.landmarks = landmarks
+        self.label = label
+        self.necessary = necessary
+        self.achievers = achievers
+        self.solvable = solvable
 
 
 def find_landmarks(relaxed: RelaxedTask, init: int, derived: tuple[int, ...]) -> LandmarkGraph:

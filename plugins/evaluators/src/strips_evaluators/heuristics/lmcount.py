@@ -19,16 +19,16 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from attrs import frozen
 
 from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
 from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in, relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 
-@frozen
-class LandmarkCountEstimator:
+class LandmarkCountEstimator(Record):
     graph: LandmarkGraph
     goal_mask: int
     #: Facts whose label holds a landmark: the ones worth looking at in a state.
@@ -39,6 +39,24 @@ class LandmarkCountEstimator:
     weight: list[int] | None
     #: The relaxed task: real operators of relaxed ones and their applicability masks.
     relaxed: RelaxedTask
+
+    __slots__ = ("graph", "goal_mask", "informative", "initially", "weight", "relaxed")
+
+    def __init__(
+        self,
+        graph: LandmarkGraph,
+        goal_mask: int,
+        informative: int,
+        initially: int,
+        weight: list[int] | None,
+        relaxed: RelaxedTask,
+    ) -> None:
+        self.graph = graph
+        self.goal_mask = goal_mask
+        self.informative = informative
+        self.initially = initially
+        self.weight = weight
+        self.relaxed = relaxed
 
     def estimate(self, state: int) -> float:
         return self._count(state)[0]
@@ -86,8 +104,7 @@ class LandmarkCountEstimator:
         return sum(weight[fact] for fact in facts_in(counted)), missing, again
 
 
-@frozen
-class LandmarkCountHeuristic:
+class LandmarkCountHeuristic(Configurable):
     """lmcount: landmarks still to reach or required again; preferred operators.
 
     Landmarks are Zhu & Givan's, from the initial state; each weighs its cheapest

@@ -31,20 +31,19 @@ import math
 from heapq import heappop, heappush
 from typing import ClassVar
 
-import attrs
-from attrs import frozen
 
 from strips_evaluators.heuristics.exploration import max_exploration
 from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in, relax
 from strips_framework.grounding.task import GroundTask
+from strips_framework.options import Configurable
+from strips_framework.records import Record
 
 NO_SUPPORTER = -1
 #: ``only_effect`` entry of an operator with several add effects.
 MANY_EFFECTS = -1
 
 
-@frozen
-class LMCutEstimator:
+class LMCutEstimator(Record):
     """``relaxed`` ends with the artificial goal operator, which adds ``goal_fact``."""
 
     relaxed: RelaxedTask
@@ -58,6 +57,24 @@ class LMCutEstimator:
     #: Per relaxed operator, the relaxed operators of the same real operator (itself
     #: included), which share its cost; None when each real operator has one.
     siblings: list[tuple[int, ...]] | None
+
+    __slots__ = ("relaxed", "goal_mask", "goal_fact", "achievers", "only_effect", "siblings")
+
+    def __init__(
+        self,
+        relaxed: RelaxedTask,
+        goal_mask: int,
+        goal_fact: int,
+        achievers: list[list[int]],
+        only_effect: list[int],
+        siblings: list[tuple[int, ...]] | None,
+    ) -> None:
+        self.relaxed = relaxed
+        self.goal_mask = goal_mask
+        self.goal_fact = goal_fact
+        self.achievers = achievers
+        self.only_effect = only_effect
+        self.siblings = siblings
 
     def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
         return self.estimate(state), ()
@@ -231,8 +248,7 @@ class LMCutEstimator:
                         lowered.append((best_cost + op_cost[op], add[op]))
 
 
-@frozen
-class LMCutHeuristic:
+class LMCutHeuristic(Configurable):
     """LM-cut (Helmert & Domshlak 2009): sum of cost-disjoint landmark costs. Admissible.
 
     The action landmarks are found by repeated hmax cuts. Always >= hmax, and the
@@ -249,8 +265,7 @@ class LMCutHeuristic:
         pre_of = [ops[:] for ops in relaxed.pre_of]
         for fact in relaxed.goal:
             pre_of[fact].append(goal_op)
-        relaxed = attrs.evolve(
-            relaxed,
+        relaxed = relaxed._replace(
             pre=[*relaxed.pre, relaxed.goal],
             add=[*relaxed.add, (goal_fact,)],
             cost=[*relaxed.cost, 0],

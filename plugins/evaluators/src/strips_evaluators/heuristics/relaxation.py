@@ -19,10 +19,9 @@ from __future__ import annotations
 
 import math
 
-from attrs import frozen
-
 from strips_evaluators.heuristics.factoring import factor_shared_pairs
 from strips_framework.grounding.task import GroundTask
+from strips_framework.records import Record
 
 #: ``operator`` entry of a relaxed operator that comes from an axiom.
 AXIOM = -1
@@ -30,8 +29,7 @@ AXIOM = -1
 CONJUNCTION = -2
 
 
-@frozen
-class RelaxedTask:
+class RelaxedTask(Record):
     """Relaxed operators ``0..len(pre)-1``: real operators with add effects and their
     conditional effects with adds (in task order), then axioms. Operators without add
     effects are left out: they reach nothing."""
@@ -66,6 +64,61 @@ class RelaxedTask:
     #: ``count_bits`` bits. One add per reached precondition updates both.
     accumulator: list[int]
     count_bits: int
+
+    __slots__ = (
+        "num_facts",
+        "pre",
+        "add",
+        "cost",
+        "operator",
+        "pre_mask",
+        "neg_mask",
+        "shared_costs",
+        "pre_count",
+        "pre_of",
+        "true_fact",
+        "goal",
+        "is_goal",
+        "unit_cost",
+        "accumulator",
+        "count_bits",
+    )
+
+    def __init__(
+        self,
+        num_facts: int,
+        pre: list[tuple[int, ...]],
+        add: list[tuple[int, ...]],
+        cost: list[int],
+        operator: list[int],
+        pre_mask: list[int],
+        neg_mask: list[int],
+        shared_costs: bool,
+        pre_count: list[int],
+        pre_of: list[list[int]],
+        true_fact: int,
+        goal: tuple[int, ...],
+        is_goal: list[bool],
+        unit_cost: bool,
+        accumulator: list[int],
+        count_bits: int,
+    ) -> None:
+        self.num_facts = num_facts
+        self.pre = pre
+        self.add = add
+        self.cost = cost
+        self.operator = operator
+        self.pre_mask = pre_mask
+        self.neg_mask = neg_mask
+        self.shared_costs = shared_costs
+        self.pre_count = pre_count
+        self.pre_of = pre_of
+        self.true_fact = true_fact
+        self.goal = goal
+        self.is_goal = is_goal
+        self.unit_cost = unit_cost
+        self.accumulator = accumulator
+        self.count_bits = count_bits
 
 
 def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> RelaxedTask:

@@ -1,0 +1,56 @@
+"""Records: immutable values as plain classes with ``__slots__``.
+
+The PDDL solve path builds its records (formulas, the lifted and the ground task, the
+result, the config) with this base rather than attrs or :class:`typing.NamedTuple`: an
+attrs class compiles its generated methods when it is built, and a NamedTuple evaluates
+its annotations and compiles its constructor, at every start-up; a slotted class with a
+written-out ``__init__`` is built about twenty times faster, which on a small task is a
+measurable part of the whole run (``benchmarks/startup_vs_pyperplan.py``). A subclass
+lists its fields in ``__slots__`` (or, when it also keeps values computed from them, in
+``FIELDS``) and assigns them in ``__init__``; :class:`Record` gives it equality and
+hashing by type and fields (so two record types with the same fields never compare
+equal), a ``repr`` and ``_replace``. Records are not changed after they are built.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, ClassVar
+
+if TYPE_CHECKING:  # a TypeVar bound to a name evaluates it: not at every start-up
+    from typing import TypeVar
+
+    _R = TypeVar("_R", bound="Record")
+
+
+class Record:
+    """Equality, hash, ``repr`` and ``_replace`` from the fields the constructor takes."""
+
+    __slots__ = ()
+    #: The constructor's parameters, in order; ``__slots__`` unless the class says otherwise.
+    FIELDS: ClassVar[tuple[str, ...]] = ()
+
+    def __init_subclass__(cls) -> None:
+        super().__init_subclass__()
+        if "FIELDS" not in cls.__dict__:
+            cls.FIELDS = tuple(cls.__dict__.get("__slots__", ()))
+
+    def _values(self) -> tuple[object, ...]:
+        return tuple([getattr(self, name) for name in self.FIELDS])
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and other._values() == self._values()  # type: ignore[attr-defined]
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    def __hash__(self) -> int:
+        return hash((type(self).__name__, self._values()))
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.FIELDS)
+        return f"{type(self).__name__}({shown})"
+
+    def _replace(self: _R, **changes: object) -> _R:
+        """A copy with ``changes`` (fields by name), as a NamedTuple's ``_replace``."""
+        values = dict(zip(self.FIELDS, self._values(), strict=True))
+        return type(self)(**{**values, **changes})

@@ -1,0 +1,29 @@
+"""Records (``strips_framework.records``): the values of the PDDL path compare by type
+and fields, hash alike when equal, and copy with changes."""
+
+from __future__ import annotations
+
+from strips_framework.grounding.task import GroundOperator
+from strips_framework.pddl.formulas import TRUE, And, Atom, Exists, Forall, Or, Parameter
+
+
+def test_records_of_different_types_with_the_same_fields_differ():
+    assert And(()) == TRUE and Or(()) != TRUE
+    body = Atom("p", ("?x",))
+    params = (Parameter("?x"),)
+    assert Exists(params, body) != Forall(params, body)
+    assert len({Exists(params, body), Forall(params, body), Exists(params, body)}) == 2
+
+
+def test_equal_records_hash_alike_and_replace_makes_a_changed_copy():
+    atom = Atom("on", ("a", "b"))
+    assert atom == Atom("on", ("a", "b")) and hash(atom) == hash(Atom("on", ("a", "b")))
+    assert atom._replace(args=("b", "a")) == Atom("on", ("b", "a")) and atom.args == ("a", "b")
+    assert repr(atom) == "Atom(predicate='on', args=('a', 'b'))"
+
+
+def test_replace_recomputes_what_a_record_derives_from_its_fields():
+    op = GroundOperator("(a)", (0,), (1,), (2,))
+    moved = op._replace(pre=(3,))
+    assert moved.pre_mask == 0b1000 and op.pre_mask == 0b1
+    assert moved != op and moved._replace(pre=(0,)) == op
