@@ -83,6 +83,14 @@ def test_interchangeable_literals_are_assigned_by_a_matching() -> None:
     assert subsumes(pattern, fits)
 
 
+def test_independent_literals_still_map_one_to_one() -> None:
+    # p(X, a) | p(Y, a) share no variable, and both match only p(a, a) in the first
+    # target: the bipartite matching, not the substitution, says no.
+    pattern = _clause((True, ("p", 0, "a")), (True, ("p", 1, "a")))
+    assert not subsumes(pattern, _clause((True, ("p", "a", "a")), (True, ("p", "b", "b"))))
+    assert subsumes(pattern, _clause((True, ("p", "a", "a")), (True, ("p", "b", "a"))))
+
+
 def test_the_matcher_stops_at_its_budget() -> None:
     # A nine-cycle R(X0,X1), ..., R(X8,X0) into a two-coloured graph (every edge between
     # the a's and the b's): an odd cycle has no image there, which only exhaustive

@@ -132,8 +132,6 @@ def _match(pattern: tuple[Literal, ...], target: tuple[Literal, ...], work: Matc
     linked = sorted(
         (found for found in options if any(occurrences[v] > 1 for v in found[0][1])), key=len
     )
-    if not linked:
-        return True
     free = [found for found in options if all(occurrences[v] == 1 for v in found[0][1])]
     budget = work.steps + MATCH_BUDGET
 
