@@ -359,6 +359,7 @@ def _attempt(options: ResolutionProver, task: ProofTask) -> _Saturation:
         task.axioms,
         task.negated_goal,
         unique_names=task.unique_names,
+        rigid=task.rigid,
         has_axioms=bool(task.axioms),
     )
 
