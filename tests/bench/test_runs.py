@@ -180,7 +180,7 @@ memory = 1024
 hard = ["{five_goals}"]
 [configs.bfs]
 evaluator = "breadth-first"
-limits = {{time = 3}}
+limits = {{time = 3, nodes = 100000000}}
 """)
     out = tmp_path / "results.jsonl"
     assert main(["bench", str(matrix), "-o", str(out), "--no-progress"]) == 0
