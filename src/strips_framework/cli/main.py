@@ -200,7 +200,7 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
 
         progress = Progress(sys.stderr)
     try:
-        with enforced(planner.config.limits), progress or contextlib.nullcontext():
+        with enforced(planner.config.limits, clock), progress or contextlib.nullcontext():
             result = planner._replace(progress=progress).run(problem, domain, clock, args.macrops)
     except LimitReached as limit:  # while reading or grounding: no search statistics yet
         status = limit.status

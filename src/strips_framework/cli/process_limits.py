@@ -6,18 +6,26 @@ memory limit (allocations beyond it raise :class:`MemoryError`) and sets a wall-
 alarm that raises :class:`~strips_framework.limits.LimitReached` wherever
 the process is. A search catches both and reports the statistics it has; elsewhere the
 CLI turns them into exit codes 22 and 23.
+
+The alarm rings :data:`GRACE_SECONDS` after the run's deadline, not at it: a search that
+stopped at its own limit (it watches the same clock) is then still writing its result,
+and an alarm at the same instant would interrupt that and lose its statistics.
 """
 
 from __future__ import annotations
 
 import resource
 import signal
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from types import FrameType
 
-from strips_framework.limits import LimitReached, Limits
+from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.result import Status
+
+#: How long after the deadline the alarm rings (see the module docstring).
+GRACE_SECONDS = 0.5
 
 
 def _out_of_time(signum: int, frame: FrameType | None) -> None:
@@ -25,10 +33,12 @@ def _out_of_time(signum: int, frame: FrameType | None) -> None:
 
 
 @contextmanager
-def enforced(limits: Limits) -> Iterator[None]:
-    """Apply the time and memory limits to the process while the block runs."""
+def enforced(limits: Limits, clock: Clock) -> Iterator[None]:
+    """Apply the memory limit, and ``clock``'s deadline as an alarm, to the process while
+    the block runs."""
     old_handler = signal.signal(signal.SIGALRM, _out_of_time)
-    signal.setitimer(signal.ITIMER_REAL, limits.time)
+    remaining = max(clock.deadline - time.perf_counter(), 0.0)
+    signal.setitimer(signal.ITIMER_REAL, remaining + GRACE_SECONDS)
     old_memory = resource.getrlimit(resource.RLIMIT_AS)
     if limits.memory is not None:
         cap, hard = limits.memory * 2**20, old_memory[1]
