@@ -1,6 +1,7 @@
-"""The compiled relaxed explorations (``_explore.pyx``) against the pure-Python reference:
-the same hadd, hmax and hFF values and relaxed plans on every state of a breadth-first
-walk, and the same expansions, plans and preferred operators when a search uses them.
+"""The compiled relaxed explorations and LM-cut (``_explore.pyx``) against the pure-Python
+reference: the same hadd, hmax, hFF and LM-cut values and relaxed plans on every state of
+a breadth-first walk, and the same expansions, plans and preferred operators when a
+search uses them.
 
 The tasks: the hand-written PDDL tasks of the core's tests (conditional effects, derived
 predicates, negative preconditions), seeded random tasks, and the first tasks of every
@@ -18,8 +19,9 @@ from shared_bench import shared_bench
 
 from strips_evaluators.heuristics.exploration import PURE_PYTHON_SWITCH, explorer
 from strips_evaluators.heuristics.ff import FFHeuristic
+from strips_evaluators.heuristics.lmcut import CompiledLMCutEstimator, LMCutHeuristic
 from strips_evaluators.heuristics.relaxation import relax
-from strips_framework.forward.eager import GreedySearch
+from strips_framework.forward.eager import AStarSearch, GreedySearch
 from strips_framework.forward.lazy import LazyGreedySearch
 from strips_framework.grounding import ground
 from strips_framework.grounding.task import GroundTask
@@ -83,33 +85,51 @@ def assert_same_explorations(task: GroundTask) -> None:
             assert compiled.preferred(state) == python.preferred(state)
 
 
+def assert_same_lmcut(task: GroundTask) -> None:
+    python = LMCutHeuristic().for_task(task, compiled=False)
+    compiled = LMCutHeuristic().for_task(task, compiled=True)
+    for state in some_states(task):
+        assert compiled.estimate(state) == python.estimate(state), task.facts_of(state)
+
+
 def test_the_compiled_module_is_built():
     relaxed = relax(random_task(0))
     assert type(explorer(relaxed)).__module__ == "strips_evaluators.heuristics._explore"
+    assert type(LMCutHeuristic().for_task(random_task(0))) is CompiledLMCutEstimator
 
 
+#: The explorations (hadd, hmax, hFF) and LM-cut, each compared state by state.
+CHECKS = pytest.mark.parametrize(
+    "check", [assert_same_explorations, assert_same_lmcut], ids=["explorations", "lmcut"]
+)
+
+
+@CHECKS
 @pytest.mark.parametrize(("domain", "problem"), LOCAL)
-def test_local_tasks_explore_alike(domain, problem):
-    assert_same_explorations(local_task(domain, problem))
+def test_local_tasks_explore_alike(check, domain, problem):
+    check(local_task(domain, problem))
 
 
+@CHECKS
 @pytest.mark.parametrize("seed", range(20))
 @pytest.mark.parametrize("conditional", [False, True])
-def test_random_tasks_explore_alike(seed, conditional):
-    assert_same_explorations(random_task(seed, conditional))
+def test_random_tasks_explore_alike(check, seed, conditional):
+    check(random_task(seed, conditional))
 
 
+@CHECKS
 @pytest.mark.parametrize("domain", IPC_DOMAINS)
-def test_ipc_first_tasks_explore_alike(domain):
-    assert_same_explorations(ipc_task(domain))
+def test_ipc_first_tasks_explore_alike(check, domain):
+    check(ipc_task(domain))
 
 
-def run_both(monkeypatch, task: GroundTask, strategy) -> None:
-    """The strategy with hFF, compiled and pure Python: the same counts and plan."""
+def run_both(monkeypatch, task: GroundTask, strategy, heuristic: object = None) -> None:
+    """The strategy with hFF (or ``heuristic``), compiled and pure Python: the same
+    counts and plan."""
     results = []
     for pure in ("", "1"):
         monkeypatch.setenv(PURE_PYTHON_SWITCH, pure)
-        estimator = FFHeuristic().for_task(task)
+        estimator = (heuristic or FFHeuristic()).for_task(task)  # type: ignore[attr-defined]
         results.append(strategy.search_task(task, estimator, Limits(time=120, expansions=3000)))
     compiled, python = results
     assert compiled.status == python.status
@@ -130,3 +150,9 @@ def test_ipc_searches_expand_alike(monkeypatch, domain):
     """Lazy greedy search with preferred operators on the second task of each domain (up
     to 3000 expansions): expansions depend on every value and preferred operator."""
     run_both(monkeypatch, ipc_task(domain, 2), LazyGreedySearch())
+
+
+@pytest.mark.parametrize("domain", IPC_DOMAINS)
+def test_ipc_astar_lmcut_expands_alike(monkeypatch, domain):
+    """A* with LM-cut on the first task of each domain (up to 3000 expansions)."""
+    run_both(monkeypatch, ipc_task(domain), AStarSearch(), LMCutHeuristic())

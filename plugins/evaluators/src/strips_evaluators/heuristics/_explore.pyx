@@ -1,5 +1,5 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True
-"""The relaxed explorations of hadd, hFF and hmax, compiled.
+"""The relaxed explorations of hadd, hFF and hmax, and LM-cut, compiled.
 
 The same algorithms as the pure-Python reference (:func:`.additive.additive_exploration`
 and :func:`.ff.relaxed_plan`, :func:`.hmax.max_exploration`) over the same
@@ -7,7 +7,8 @@ and :func:`.ff.relaxed_plan`, :func:`.hmax.max_exploration`) over the same
 operators of each fact and the effects of each operator). The queue pops facts by cost,
 last in first out among equal costs, which is the order of the reference's bucket queue,
 so supporters, relaxed plans and hence preferred operators and search expansions are the
-same; a differential test checks that on every shared domain.
+same; a differential test checks that on every shared domain. :class:`LMCut` is
+:class:`~.lmcut.LMCutEstimator` over the same arrays (see its docstring).
 """
 
 from libc.stdlib cimport free, malloc, realloc
@@ -80,7 +81,7 @@ cdef class Explorer:
     cdef int* stack
     cdef int num_real
 
-    def __cinit__(self, relaxed):
+    def __cinit__(self, relaxed, *extra):  # a subclass's arguments follow ``relaxed``
         self.num_facts = relaxed.num_facts
         self.num_ops = len(relaxed.pre)
         self.true_fact = relaxed.true_fact
@@ -160,9 +161,10 @@ cdef class Explorer:
         free(self.counted)
         free(self.stack)
 
-    cdef int _push(self, Py_ssize_t* size, u64* order, long long value, int fact) except -1:
+    cdef int _push(self, Py_ssize_t* size, u64* order, long long value, int fact,
+                   bint fifo=False) except -1:
         """Queue ``fact`` at ``value``; ties pop last in, first out (the key's low bits
-        count ``order`` down)."""
+        count ``order`` down), or first in, first out with ``fifo`` (they count it up)."""
         cdef Py_ssize_t i, parent
         cdef u64 key
         if size[0] == self.heap_capacity:
@@ -176,7 +178,7 @@ cdef class Explorer:
             if self.heap_fact == NULL:
                 raise MemoryError()
         self.heap_fact[order[0]] = fact
-        key = (<u64> value << 32) | (LAST_ORDER - order[0])
+        key = (<u64> value << 32) | (order[0] if fifo else LAST_ORDER - order[0])
         order[0] += 1
         i = size[0]
         size[0] += 1
@@ -351,4 +353,397 @@ cdef class Explorer:
             for i in range(self.pre_list_start[op], self.pre_list_start[op + 1]):
                 self.stack[top] = self.pre_list[i]
                 top += 1
+        return total
+
+
+cdef int* _rows(lists, int** starts) except NULL:
+    """``lists`` as compressed rows: ``starts[0][i]`` .. ``starts[0][i + 1]`` index row i."""
+    bounds, flat = [0], []
+    for row in lists:
+        flat.extend(row)
+        bounds.append(len(flat))
+    starts[0] = _ints(bounds)
+    return _ints(flat)
+
+
+cdef class LMCut(Explorer):
+    """LM-cut over the relaxed task with the artificial goal operator, as
+    :class:`~.lmcut.LMCutEstimator` computes it: the same hmax exploration (last in,
+    first out among equal costs), goal zones, cuts and incremental hmax updates (first
+    in, first out within a cost level, a level's facts before the updates they cause), so
+    the values are the reference's; ``tests/test_compiled.py`` compares them."""
+
+    cdef int goal_fact, has_siblings
+    cdef int* ach_start
+    cdef int* ach_ops
+    cdef int* only_effect
+    cdef int* sib_start
+    cdef int* sib_ops
+    # Per state (reused): operator costs left, supporters and their hmax, fact hmax.
+    cdef long long* left
+    cdef int* sup
+    cdef long long* sup_cost
+    cdef long long* hmax
+    cdef char* zone
+    cdef char* seen
+    cdef char* in_cut
+    cdef int* cut
+    cdef int* cut_more
+    cdef int* facts
+    cdef int* zone_fact
+    cdef int* zone_pos
+    # The justification graph's edges out of each fact (stale ones are skipped).
+    cdef int** supported
+    cdef int* supported_len
+    cdef int* supported_cap
+    cdef long long* lowered_value
+    cdef int* lowered_op
+    cdef Py_ssize_t lowered_cap
+
+    def __cinit__(self, relaxed, goal_fact, achievers, only_effect, siblings):
+        cdef int n = max(self.num_facts, 1), m = max(self.num_ops, 1), i
+        self.goal_fact = goal_fact
+        self.ach_ops = _rows(achievers, &self.ach_start)
+        self.only_effect = _ints(only_effect)
+        self.has_siblings = siblings is not None
+        self.sib_ops = _rows(siblings if siblings is not None else [], &self.sib_start)
+        self.left = <long long*> malloc(m * sizeof(long long))
+        self.sup = <int*> malloc(m * sizeof(int))
+        self.sup_cost = <long long*> malloc(m * sizeof(long long))
+        self.hmax = <long long*> malloc(n * sizeof(long long))
+        self.zone = <char*> malloc(n)
+        self.seen = <char*> malloc(n)
+        self.in_cut = <char*> malloc(m)
+        self.cut = <int*> malloc(m * sizeof(int))
+        self.cut_more = <int*> malloc(m * sizeof(int))
+        self.facts = <int*> malloc(n * sizeof(int))
+        self.zone_fact = <int*> malloc(n * sizeof(int))
+        self.zone_pos = <int*> malloc(n * sizeof(int))
+        self.supported = <int**> malloc(n * sizeof(int*))
+        self.supported_len = <int*> malloc(n * sizeof(int))
+        self.supported_cap = <int*> malloc(n * sizeof(int))
+        self.lowered_cap = m
+        self.lowered_value = <long long*> malloc(m * sizeof(long long))
+        self.lowered_op = <int*> malloc(m * sizeof(int))
+        if (self.left == NULL or self.sup == NULL or self.sup_cost == NULL
+                or self.hmax == NULL or self.zone == NULL or self.seen == NULL
+                or self.in_cut == NULL or self.cut == NULL or self.cut_more == NULL
+                or self.facts == NULL or self.zone_fact == NULL or self.zone_pos == NULL
+                or self.supported == NULL or self.supported_len == NULL
+                or self.supported_cap == NULL or self.lowered_value == NULL
+                or self.lowered_op == NULL):
+            raise MemoryError()
+        for i in range(n):
+            self.supported[i] = NULL
+            self.supported_cap[i] = 0
+            self.supported_len[i] = 0
+
+    def __dealloc__(self):
+        cdef int i
+        if self.supported != NULL:
+            for i in range(max(self.num_facts, 1)):
+                free(self.supported[i])
+        free(self.ach_start)
+        free(self.ach_ops)
+        free(self.only_effect)
+        free(self.sib_start)
+        free(self.sib_ops)
+        free(self.left)
+        free(self.sup)
+        free(self.sup_cost)
+        free(self.hmax)
+        free(self.zone)
+        free(self.seen)
+        free(self.in_cut)
+        free(self.cut)
+        free(self.cut_more)
+        free(self.facts)
+        free(self.zone_fact)
+        free(self.zone_pos)
+        free(self.supported)
+        free(self.supported_len)
+        free(self.supported_cap)
+        free(self.lowered_value)
+        free(self.lowered_op)
+
+    cdef int _support(self, int fact, int op) except -1:
+        """Append ``op`` to the operators ``fact`` supports."""
+        cdef int length = self.supported_len[fact]
+        if length == self.supported_cap[fact]:
+            self.supported_cap[fact] = max(4, 2 * length)
+            self.supported[fact] = <int*> realloc(
+                self.supported[fact], self.supported_cap[fact] * sizeof(int))
+            if self.supported[fact] == NULL:
+                raise MemoryError()
+        self.supported[fact][length] = op
+        self.supported_len[fact] = length + 1
+        return 0
+
+    cdef int _lower(self, Py_ssize_t* count, long long value, int op) except -1:
+        """Note that ``op``'s effects may now be reached at ``value``."""
+        if count[0] == self.lowered_cap:
+            self.lowered_cap *= 2
+            self.lowered_value = <long long*> realloc(
+                self.lowered_value, self.lowered_cap * sizeof(long long))
+            self.lowered_op = <int*> realloc(self.lowered_op, self.lowered_cap * sizeof(int))
+            if self.lowered_value == NULL or self.lowered_op == NULL:
+                raise MemoryError()
+        self.lowered_value[count[0]] = value
+        self.lowered_op[count[0]] = op
+        count[0] += 1
+        return 0
+
+    cdef int _max_explore(self, int num_start) except -1:
+        """hmax of every fact under the costs ``left`` from the ``num_start`` facts in
+        ``facts``, with each reached operator's supporter (its last precondition out of
+        the queue) and that supporter's hmax."""
+        cdef Py_ssize_t size = 0
+        cdef u64 order = 0, key
+        cdef int fact, op, effect, i, j
+        cdef long long level, reached
+        for i in range(self.num_facts):
+            self.hmax[i] = INFINITE
+        for i in range(self.num_ops):
+            self.remaining[i] = self.pre_count[i]
+        for i in range(num_start):
+            self.hmax[self.facts[i]] = 0
+            self._push(&size, &order, 0, self.facts[i])
+        while size:
+            key = self._pop(&size)
+            level = <long long> (key >> 32)
+            fact = self.heap_fact[LAST_ORDER - (key & LAST_ORDER)]
+            if self.hmax[fact] != level:
+                continue
+            for i in range(self.pre_start[fact], self.pre_start[fact + 1]):
+                op = self.pre_ops[i]
+                self.remaining[op] -= 1
+                if self.remaining[op]:
+                    continue
+                self.sup[op] = fact
+                self.sup_cost[op] = level
+                reached = level + self.left[op]
+                for j in range(self.add_start[op], self.add_start[op + 1]):
+                    effect = self.add_facts[j]
+                    if reached < self.hmax[effect]:
+                        self.hmax[effect] = reached
+                        self._push(&size, &order, reached, effect)
+        return 0
+
+    cdef bint _unreached_by_free(self, int fact):
+        """True when every operator adding ``fact`` still costs something."""
+        cdef int i
+        for i in range(self.ach_start[fact], self.ach_start[fact + 1]):
+            if not self.left[self.ach_ops[i]]:
+                return False
+        return True
+
+    cdef int _goal_zone(self) except -1:
+        """:meth:`.lmcut.LMCutEstimator._goal_zone`: ``zone`` marks the facts from which
+        the goal is reached by zero-cost justifications (depth first, one position per
+        level in a fact's achievers)."""
+        cdef int top = 0, fact, op, i, condition, end
+        cdef long long level
+        cdef bint pushed
+        for i in range(self.num_facts):
+            self.zone[i] = 0
+        self.zone[self.goal_fact] = 1
+        self.zone_fact[0] = self.goal_fact
+        self.zone_pos[0] = self.ach_start[self.goal_fact]
+        top = 1
+        while top:
+            fact = self.zone_fact[top - 1]
+            end = self.ach_start[fact + 1]
+            pushed = False
+            while self.zone_pos[top - 1] < end:
+                op = self.ach_ops[self.zone_pos[top - 1]]
+                self.zone_pos[top - 1] += 1
+                if self.left[op] or self.sup[op] < 0:
+                    continue
+                level = self.sup_cost[op]
+                for i in range(self.pre_list_start[op], self.pre_list_start[op + 1]):
+                    condition = self.pre_list[i]
+                    if self.hmax[condition] == level and (
+                            self.zone[condition] or self._unreached_by_free(condition)):
+                        if condition != self.sup[op]:
+                            self.sup[op] = condition
+                            self._support(condition, op)
+                        break
+                condition = self.sup[op]
+                if not self.zone[condition]:
+                    self.zone[condition] = 1
+                    self.zone_fact[top] = condition
+                    self.zone_pos[top] = self.ach_start[condition]
+                    top += 1
+                    pushed = True
+                    break
+            if not pushed:
+                top -= 1
+        return 0
+
+    cdef int _cut(self, int num_start) except -1:
+        """:meth:`.lmcut.LMCutEstimator._cut` into ``cut``; returns its length."""
+        cdef int top = 0, count = 0, fact, op, effect, i, j
+        cdef bint hits
+        for i in range(self.num_facts):
+            self.seen[i] = self.zone[i]
+        for i in range(self.num_ops):
+            self.in_cut[i] = 0
+        for i in range(num_start):
+            self.seen[self.facts[i]] = 1
+        # ``zone_fact`` is free again: the depth-first stack of this search.
+        for i in range(num_start):
+            self.zone_fact[top] = self.facts[i]
+            top += 1
+        while top:
+            top -= 1
+            fact = self.zone_fact[top]
+            for i in range(self.supported_len[fact]):
+                op = self.supported[fact][i]
+                if self.sup[op] != fact:
+                    continue
+                effect = self.only_effect[op]
+                if effect >= 0:
+                    if self.zone[effect]:
+                        if not self.in_cut[op]:
+                            self.in_cut[op] = 1
+                            self.cut[count] = op
+                            count += 1
+                    elif not self.seen[effect]:
+                        self.seen[effect] = 1
+                        self.zone_fact[top] = effect
+                        top += 1
+                    continue
+                hits = False
+                for j in range(self.add_start[op], self.add_start[op + 1]):
+                    if self.zone[self.add_facts[j]]:
+                        hits = True
+                        break
+                if hits:
+                    if not self.in_cut[op]:
+                        self.in_cut[op] = 1
+                        self.cut[count] = op
+                        count += 1
+                    continue
+                for j in range(self.add_start[op], self.add_start[op + 1]):
+                    effect = self.add_facts[j]
+                    if not self.seen[effect]:
+                        self.seen[effect] = 1
+                        self.zone_fact[top] = effect
+                        top += 1
+        return count
+
+    cdef int _lower_hmax(self, int count) except -1:
+        """:meth:`.lmcut.LMCutEstimator._lower_hmax` for the ``count`` operators in ``cut``
+        that have a supporter."""
+        cdef Py_ssize_t size = 0, lowered = 0, k
+        cdef u64 order = 0, key, boundary
+        cdef int op, effect, fact, condition, best, i, j
+        cdef long long level, reached, best_cost, old_cost
+        for i in range(count):
+            op = self.cut[i]
+            self._lower(&lowered, self.sup_cost[op] + self.left[op], op)
+        while True:
+            for k in range(lowered):
+                reached = self.lowered_value[k]
+                op = self.lowered_op[k]
+                for j in range(self.add_start[op], self.add_start[op + 1]):
+                    effect = self.add_facts[j]
+                    if reached < self.hmax[effect]:
+                        self.hmax[effect] = reached
+                        self._push(&size, &order, reached, effect, True)
+            lowered = 0
+            if not size:
+                break
+            # One level's facts as queued so far, then the decreases they cause.
+            level = <long long> (self.heap[0] >> 32)
+            boundary = order
+            while size and <long long> (self.heap[0] >> 32) == level and (
+                    self.heap[0] & LAST_ORDER) < boundary:
+                key = self._pop(&size)
+                fact = self.heap_fact[key & LAST_ORDER]
+                if self.hmax[fact] != level:
+                    continue
+                for i in range(self.supported_len[fact]):
+                    op = self.supported[fact][i]
+                    if self.sup[op] != fact or self.sup_cost[op] <= level:
+                        continue
+                    best, best_cost = fact, level
+                    for j in range(self.pre_list_start[op], self.pre_list_start[op + 1]):
+                        condition = self.pre_list[j]
+                        if self.hmax[condition] > best_cost:
+                            best, best_cost = condition, self.hmax[condition]
+                    old_cost = self.sup_cost[op]
+                    if best != fact:
+                        self.sup[op] = best
+                        self._support(best, op)
+                    self.sup_cost[op] = best_cost
+                    if best_cost != old_cost:
+                        self._lower(&lowered, best_cost + self.left[op], op)
+        return 0
+
+    def lmcut(self, state):
+        """The LM-cut value of ``state`` (``math.inf`` at a relaxed dead end; goal states
+        are the caller's)."""
+        cdef int num_start = 0, i, j, op, count, more, bit, other
+        cdef long long total = 0, cut_cost
+        cdef bytes packed = state.to_bytes(self.num_bytes, "little")
+        cdef const unsigned char* data = packed
+        cdef unsigned char byte
+        for i in range(self.num_bytes):
+            byte = data[i]
+            bit = 0
+            while byte:
+                if byte & 1:
+                    self.facts[num_start] = i * 8 + bit
+                    num_start += 1
+                byte >>= 1
+                bit += 1
+        self.facts[num_start] = self.true_fact
+        num_start += 1
+        for i in range(self.num_ops):
+            self.left[i] = self.op_cost[i]
+            self.sup[i] = -1
+            self.sup_cost[i] = 0
+        self._max_explore(num_start)
+        if self.hmax[self.goal_fact] == INFINITE:
+            return math.inf
+        for i in range(self.num_facts):
+            self.supported_len[i] = 0
+        for op in range(self.num_ops):
+            if self.sup[op] >= 0:
+                self._support(self.sup[op], op)
+        while self.hmax[self.goal_fact]:
+            self._goal_zone()
+            count = self._cut(num_start)
+            if not count:  # never with a goal still costing something: a bug, not a value
+                raise RuntimeError("LM-cut: an empty cut in front of a goal zone")
+            cut_cost = self.left[self.cut[0]]
+            for i in range(1, count):
+                if self.left[self.cut[i]] < cut_cost:
+                    cut_cost = self.left[self.cut[i]]
+            total += cut_cost
+            if self.has_siblings:
+                # Every relaxed operator of a cut operator's real operator, first seen first.
+                for i in range(self.num_ops):
+                    self.in_cut[i] = 0
+                more = 0
+                for i in range(count):
+                    op = self.cut[i]
+                    for j in range(self.sib_start[op], self.sib_start[op + 1]):
+                        other = self.sib_ops[j]
+                        if not self.in_cut[other]:
+                            self.in_cut[other] = 1
+                            self.cut_more[more] = other
+                            more += 1
+                for i in range(more):
+                    self.cut[i] = self.cut_more[i]
+                count = more
+            for i in range(count):
+                self.left[self.cut[i]] -= cut_cost
+            more = 0
+            for i in range(count):
+                if self.sup[self.cut[i]] >= 0:
+                    self.cut[more] = self.cut[i]
+                    more += 1
+            self._lower_hmax(more)
         return total

@@ -6,7 +6,8 @@ The functions here are the pure-Python reference. When the compiled module
 gives its :class:`Explorer` instead: the same algorithms over C arrays, with the same
 supporters, relaxed plans and values (``tests/test_compiled.py`` compares them state by
 state and search by search). ``STRIPS_PURE_PYTHON=1`` in the environment picks the
-reference anyway. LM-cut and the landmark heuristics run the reference only.
+reference anyway. LM-cut has its compiled counterpart there too (``_explore.LMCut``);
+the landmark-count heuristic runs the reference only.
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ from __future__ import annotations
 import math
 import os
 from heapq import heappop, heappush
+from types import ModuleType
 from typing import Protocol
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, start_exploration
@@ -34,22 +36,29 @@ class Explorer(Protocol):
     def preferred(self, state: int) -> tuple[float, list[int]]: ...
 
 
-def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
-    """The compiled explorer of ``relaxed`` when it is built (and ``compiled`` is not
-    False, nor the environment switch set), else the pure-Python one; ``compiled=True``
-    insists on the compiled one (ImportError when it is not built)."""
+def compiled_module(compiled: bool | None = None) -> ModuleType | None:
+    """The compiled module when it is built (and ``compiled`` is not False, nor the
+    environment switch set), else ``None``; ``compiled=True`` insists on it
+    (ImportError when it is not built)."""
     if compiled is None:
         compiled = not os.environ.get(PURE_PYTHON_SWITCH)
         if compiled:
             try:
                 from strips_evaluators.heuristics import _explore
             except ImportError:
-                compiled = False
-    if compiled:
-        from strips_evaluators.heuristics import _explore
+                return None
+    if not compiled:
+        return None
+    from strips_evaluators.heuristics import _explore
 
-        return _explore.Explorer(relaxed)
-    return PythonExplorer(relaxed)
+    return _explore
+
+
+def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
+    """The compiled explorer of ``relaxed`` (see :func:`compiled_module`), else the
+    pure-Python one."""
+    module = compiled_module(compiled)
+    return PythonExplorer(relaxed) if module is None else module.Explorer(relaxed)
 
 
 class PythonExplorer:

@@ -23,16 +23,20 @@ one of them, and the cut's cost is taken off all relaxed operators of those oper
 That keeps the sum admissible (one application of an operator can cross several cuts
 through different effects, but pays for them from one cost), as the basic extension of
 Röger, Pommerening & Helmert (2014); Fast Downward's LM-cut refuses such tasks.
+
+This module is the reference; ``_explore.LMCut`` computes the same values compiled, and
+:meth:`LMCutHeuristic.for_task` takes it when it is built (``STRIPS_PURE_PYTHON=1``: the
+reference).
 """
 
 from __future__ import annotations
 
 import math
 from heapq import heappop, heappush
-from typing import ClassVar
+from typing import Any, ClassVar
 
 
-from strips_evaluators.heuristics.exploration import max_exploration
+from strips_evaluators.heuristics.exploration import compiled_module, max_exploration
 from strips_evaluators.heuristics.relaxation import AXIOM, RelaxedTask, facts_in, relax
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
@@ -248,6 +252,28 @@ class LMCutEstimator(Record):
                         lowered.append((best_cost + op_cost[op], add[op]))
 
 
+class CompiledLMCutEstimator(Record):
+    """LM-cut by the compiled ``_explore.LMCut``: the values of :class:`LMCutEstimator`
+    (``tests/test_compiled.py`` compares them), several times faster."""
+
+    lmcut: Any
+    goal_mask: int
+
+    __slots__ = ("lmcut", "goal_mask")
+
+    def __init__(self, lmcut: Any, goal_mask: int) -> None:
+        self.lmcut = lmcut
+        self.goal_mask = goal_mask
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
+        return self.estimate(state), ()
+
+    def estimate(self, state: int) -> float:
+        if state & self.goal_mask == self.goal_mask:
+            return 0
+        return self.lmcut.lmcut(state)
+
+
 class LMCutHeuristic(Configurable):
     """LM-cut (Helmert & Domshlak 2009): sum of cost-disjoint landmark costs. Admissible.
 
@@ -258,7 +284,11 @@ class LMCutHeuristic(Configurable):
     name: ClassVar[str] = "lmcut"
     admissible: ClassVar[bool] = True
 
-    def for_task(self, task: GroundTask) -> LMCutEstimator:
+    def for_task(
+        self, task: GroundTask, compiled: bool | None = None
+    ) -> LMCutEstimator | CompiledLMCutEstimator:
+        """The estimator for ``task``: the compiled one when it is built (see
+        :func:`~.exploration.compiled_module`; ``compiled=False`` gives the reference)."""
         relaxed = relax(task, extra_facts=1)
         goal_fact = relaxed.true_fact + 1
         goal_op = len(relaxed.pre)
@@ -289,4 +319,8 @@ class LMCutHeuristic(Configurable):
                 tuple(of_operator[index]) if index >= 0 else (op,)
                 for op, index in enumerate(relaxed.operator)
             ]
+        module = compiled_module(compiled)
+        if module is not None:
+            lmcut = module.LMCut(relaxed, goal_fact, achievers, only_effect, siblings)
+            return CompiledLMCutEstimator(lmcut, task.goal_mask)
         return LMCutEstimator(relaxed, task.goal_mask, goal_fact, achievers, only_effect, siblings)
