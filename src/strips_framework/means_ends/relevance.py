@@ -148,25 +148,37 @@ def _never_applicable(
     return False
 
 
-def _protected_facts(difference: Difference, model: WorldModel) -> set[Atom]:
+def _protected_facts(
+    difference: Difference, model: WorldModel
+) -> dict[tuple[str, int], set[Atom]]:
     """Facts of ``model`` that could resolve away a literal of the difference: the facts
-    the proof rests on or could rest on (found through the model's fact index)."""
+    the proof rests on or could rest on (found through the model's fact index), filed by
+    (predicate, arity), since a delete pattern can only match facts of its own predicate
+    and in a large world there are many of them."""
     wanted = {
         atom
         for clause in (*difference.negated_goal, *difference.clauses)
         for positive, atom in clause.literals
         if not positive
     }
-    return {
-        fact
-        for atom in wanted
-        for fact in model.facts_matching(atom)
-        if unify(atom, fact, {}) is not None
-    }
+    filed: dict[tuple[str, int], set[Atom]] = defaultdict(set)
+    for atom in wanted:
+        for fact in model.facts_matching(atom):
+            if unify(atom, fact, {}) is not None:
+                filed[(fact[0], len(fact))].add(fact)
+    return filed
 
 
-def _deleted_count(instance: OperatorInstance, facts: set[Atom]) -> int:
+def _deleted_count(instance: OperatorInstance, facts: dict[tuple[str, int], set[Atom]]) -> int:
     """How many of ``facts`` the instance's delete list may delete (unbound parameters and
-    wildcards match anything)."""
+    wildcards match anything); each pattern is tried only on the facts of its predicate."""
     patterns, _ = instance.effects()
-    return sum(1 for fact in facts if any(may_delete(p, fact) for p in patterns))
+    by_key: dict[tuple[str, int], list[Atom]] = defaultdict(list)
+    for pattern in patterns:
+        by_key[(pattern[0], len(pattern))].append(pattern)
+    return sum(
+        1
+        for key, same in by_key.items()
+        for fact in facts.get(key, ())
+        if any(may_delete(p, fact) for p in same)
+    )
