@@ -30,11 +30,13 @@ import subprocess
 import sys
 from pathlib import Path
 
+from shared_bench import shared_bench
+
 #: The ``strips`` command of the interpreter running this script (its venv's).
 STRIPS = str(Path(sys.executable).parent / "strips")
 BASELINE = "fd-lazy-ff"
-#: Where anchors.py's suites are, from the repository's root.
-BENCH = Path(__file__).resolve().parents[1].parent / "shared" / "bench" / "ipc"
+#: Where anchors.py's suites are (``None`` without ../shared: give ``--bench``).
+BENCH = shared_bench("ipc")
 
 
 def solve(log: Path, config: Path, domain: Path, problem: Path, plan: Path) -> int:
@@ -121,6 +123,8 @@ def main() -> None:
     args = parser.parse_args()
     if args.command == "solve":
         sys.exit(solve(args.log, args.config.resolve(), args.domain, args.problem, args.plan))
+    if args.bench is None:
+        parser.error("shared/bench/ipc not found: give --bench")
     table(args.csv, args.log, args.bench)
 
 
