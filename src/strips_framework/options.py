@@ -18,6 +18,8 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
+from strips_framework.records import Record
+
 #: The words for a value of each type, as TOML users know them.
 _ARTICLES = {bool: "a boolean", int: "an integer", float: "a float", str: "a string",
              dict: "a table", list: "an array"}  # fmt: skip
@@ -91,12 +93,17 @@ class Option:
         return value
 
 
-class Configurable:
-    """An implementation built from its declared :attr:`options` by keyword."""
+class Configurable(Record):
+    """An implementation built from its declared :attr:`options` by keyword; a
+    :class:`~strips_framework.records.Record` whose fields are its options."""
 
     __slots__ = ()
     #: What the class can be configured with, in the order ``strips plugins`` lists them.
     options: ClassVar[tuple[Option, ...]] = ()
+
+    def __init_subclass__(cls) -> None:
+        super().__init_subclass__()
+        cls.FIELDS = tuple(option.name for option in cls.options)
 
     def __init__(self, **values: object) -> None:
         declared_names = {option.name for option in self.options}
@@ -107,21 +114,8 @@ class Configurable:
             value = option.check(values[option.name]) if option.name in values else option.default
             object.__setattr__(self, option.name, value)
 
-    def _values(self) -> tuple[object, ...]:
-        return tuple(getattr(self, option.name) for option in self.options)
-
     def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"{type(self).__qualname__} is immutable: options are set when it is built")
-
-    def __eq__(self, other: object) -> bool:
-        return type(other) is type(self) and other._values() == self._values()  # type: ignore[attr-defined]
-
-    def __hash__(self) -> int:
-        return hash((type(self), self._values()))
-
-    def __repr__(self) -> str:
-        shown = ", ".join(f"{o.name}={getattr(self, o.name)!r}" for o in self.options)
-        return f"{type(self).__qualname__}({shown})"
 
 
 def declared_options(cls: type) -> dict[str, object]:
