@@ -46,10 +46,13 @@ def _peak_mib() -> float:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
-def measure(size: int, folder: Path, goal: str = "boxes", nodes: int = 400) -> dict[str, float]:
-    """Load, open and solve the generated world of ``size`` formulas; the figures."""
-    path = folder / f"world-{size}-{goal}.strips"
-    text = robot_world(size)
+def measure(
+    size: int, folder: Path, goal: str = "boxes", nodes: int = 400, rooms: int | None = None
+) -> dict[str, float]:
+    """Load, open and solve the generated world of ``size`` formulas (``rooms`` extra
+    rooms, :func:`robot_world`'s default when None); the figures."""
+    path = folder / f"world-{size}-{goal}-{rooms}.strips"
+    text = robot_world(size, rooms)
     if goal == "five-goals":
         text = text.replace("goal NEXTTO(BOX1, BOX2) & NEXTTO(BOX2, BOX3)", f"goal {FIVE_GOALS}")
     path.write_text(text)
@@ -107,7 +110,15 @@ def main() -> None:
             f"{f['formulas']:8.0f} {f['load_s']:8.2f} {f['open_s']:8.2f} {f['nodes']:6.0f}"
             f" {f['attempts']:9.0f} {f['ms_per_attempt']:11.3f} {f['peak_mib']:9.0f}"
         )
-    f = measure(sizes[-1], folder, goal="five-goals", nodes=1000)
+    print("five-part goal, 1,000-node limit; ms/attempt with the extra rooms / without them")
+    for size in sizes:
+        grown = measure(size, folder, goal="five-goals", nodes=1000)
+        plain = measure(size, folder, goal="five-goals", nodes=1000, rooms=0)
+        print(
+            f"{grown['formulas']:8.0f} formulas: {grown['nodes']:.0f} / {plain['nodes']:.0f}"
+            f" nodes, {grown['ms_per_attempt']:.3f} / {plain['ms_per_attempt']:.3f} ms/attempt"
+        )
+    f = grown
     print(
         f"five-part goal on {f['formulas']:.0f} formulas: {f['nodes']:.0f} nodes, "
         f"{f['attempts']:.0f} attempts, {f['ms_per_attempt']:.3f} ms/attempt, "
