@@ -142,3 +142,18 @@ def test_cost_and_successors_are_weighted() -> None:
 def test_refuses_to_score_without_its_problem() -> None:
     with pytest.raises(TypeError, match="for_problem"):
         RelaxedPlanEvaluator().evaluate(_node(_goal(("AT", "C"))))
+
+
+def test_one_scorer_gives_each_model_its_own_costs() -> None:
+    """The costs kept per model (a search returns to a few models often) are never those
+    of another model, in whatever order the nodes come."""
+    scorer = evaluator_for_problem(RelaxedPlanEvaluator(), [GO], M0.initial)
+    at_b = M0.changed(frozenset({("AT", "A")}), frozenset({("AT", "B")}))
+    go_bc = OperatorInstance(GO, [(X, "B"), (Y, "C")])
+    top = _goal(("AT", "C"))
+    scores = [
+        scorer.evaluate(_node(*goals, model=model))
+        for model in (M0, at_b, M0, at_b)
+        for goals in ((top,), (Goal(go_bc.precondition(), go_bc), top))
+    ]
+    assert scores == [2, 2, 1, 1] * 2

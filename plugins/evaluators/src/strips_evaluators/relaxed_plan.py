@@ -19,24 +19,26 @@ from __future__ import annotations
 
 import heapq
 import math
-from collections import ChainMap, defaultdict
+from collections import ChainMap, OrderedDict, defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from typing import ClassVar
 
-from attrs import field, frozen, validators
+from attrs import define, field, frozen, validators
 
 from strips_evaluators.options import weight
 from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.node import Node
 from strips_framework.worldmodel.problem import OperatorSchema
-from strips_framework.worldmodel.world import InitialModel
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 #: Values of the parameters and variables of some atoms.
 Binding = dict[object, object]
 #: A goal's parameters get the cheapest of at most this many bindings: a goal with many
 #: unbound parameters would otherwise cost a join per node.
 MAX_BINDINGS = 200
+#: How many models' relaxed costs a search keeps (the ones used last).
+MODELS_KEPT = 256
 
 
 @frozen
@@ -103,6 +105,18 @@ class RelaxedPlanScorer:
         )
 
 
+@define
+class _ModelCosts:
+    """One model's hadd costs and achievers, and the cheapest facts found for goals in
+    it, by (goal atoms, atoms given by earlier goal-list operators)."""
+
+    cost: dict[int, float]
+    supporter: dict[int, int]
+    cheapest: dict[tuple[tuple[Atom, ...], frozenset[Atom]], list[int] | None] = field(
+        factory=dict
+    )
+
+
 class _RelaxedTask:
     """Ground facts (numbered), ground instances (precondition and add-list fact numbers),
     and what the estimate treats as free."""
@@ -114,6 +128,7 @@ class _RelaxedTask:
         self.needed_by: list[list[int]] = []
         self.free: set[tuple[str, int]] = set()
         self.index = _FactIndex(())
+        self._models: OrderedDict[WorldModel, _ModelCosts] = OrderedDict()
 
     @classmethod
     def ground(cls, operators: Sequence[OperatorSchema], initial: InitialModel) -> _RelaxedTask:
@@ -158,18 +173,45 @@ class _RelaxedTask:
         return number
 
     def estimate(self, node: Node, ff: bool) -> float:
-        cost, supporter = self._hadd(node)
+        known = self._of_model(node.model)
         goals: list[int] = []
         for atoms, provided in _goal_atoms(node, self.free):
-            given = {self.fact_ids[a] for a in provided if a in self.fact_ids}
-            best = self._cheapest(atoms, ChainMap(dict.fromkeys(given, 0.0), cost))
+            key = (tuple(atoms), provided)
+            if key not in known.cheapest:
+                known.cheapest[key] = self._cheapest_given(atoms, provided, known.cost)
+            best = known.cheapest[key]
             if best is None:
                 return math.inf
-            goals.extend(f for f in best if f not in given)
+            goals.extend(best)
         on_list = len(node.goals) - 1
         if not ff:
-            return on_list + sum(cost[g] for g in goals)
-        return on_list + len(self._relaxed_plan(goals, supporter))
+            return on_list + sum(known.cost[g] for g in goals)
+        return on_list + len(self._relaxed_plan(goals, known.supporter))
+
+    def _of_model(self, model: WorldModel) -> _ModelCosts:
+        """The hadd costs of ``model`` (and its goals' cheapest facts, filled in as they
+        are asked for): a node's successors share its model, and a means-ends search
+        keeps returning to a few models (201 in 3,000 nodes on depot 03), so they are
+        kept for the :data:`MODELS_KEPT` models used last."""
+        known = self._models.get(model)
+        if known is None:
+            known = _ModelCosts(*self._hadd(model))
+            self._models[model] = known
+            if len(self._models) > MODELS_KEPT:
+                self._models.popitem(last=False)
+        else:
+            self._models.move_to_end(model)
+        return known
+
+    def _cheapest_given(
+        self, atoms: list[Atom], provided: frozenset[Atom], cost: dict[int, float]
+    ) -> list[int] | None:
+        """:meth:`_cheapest` with the ``provided`` atoms free, less those atoms."""
+        given = {self.fact_ids[a] for a in provided if a in self.fact_ids}
+        if not given:
+            return self._cheapest(atoms, cost)
+        best = self._cheapest(atoms, ChainMap(dict.fromkeys(given, 0.0), cost))
+        return None if best is None else [f for f in best if f not in given]
 
     def _cheapest(self, atoms: list[Atom], cost: Mapping[int, float]) -> list[int] | None:
         """The reachable ground facts for one goal's atoms under the binding of its
@@ -187,12 +229,12 @@ class _RelaxedTask:
                 break
         return best
 
-    def _hadd(self, node: Node) -> tuple[dict[int, float], dict[int, int]]:
+    def _hadd(self, model: WorldModel) -> tuple[dict[int, float], dict[int, int]]:
         """hadd costs of the reachable facts, and each fact's cheapest achiever."""
         ids = self.fact_ids
         cost: dict[int, float] = {}
         queue: list[tuple[float, int]] = []
-        for atom in node.model.facts():
+        for atom in model.facts():
             number = ids.get(atom)
             if number is not None and number not in cost:
                 cost[number] = 0.0
