@@ -74,3 +74,49 @@ def test_nodes_sharing_a_model_and_first_goal_share_its_difference_and_relevant_
     assert counting.asked == 1
     assert second.difference is first.difference
     assert [r.operator for r in second.pending] == [r.operator for r in first.pending[1:]]
+
+
+def _instance(problem_operators, name, *values):
+    from strips_framework.worldmodel.operators import OperatorInstance
+
+    schema = next(s for s in problem_operators if s.name == name)
+    return OperatorInstance(schema, list(zip(schema.parameters, values)))
+
+
+def _after(run, root, *steps):
+    """The model after ``steps`` from the root, and the last instance applied."""
+    operators = run.goal_prover.problem.operators
+    model = root
+    for step in steps:
+        last = _instance(operators, *step)
+        model = last.apply(model)
+    return model, last
+
+
+#: The paper's plan for the 3-boxes problem, which ends with every box at b.
+PLAN = [("goto", "a", "c"), ("push", "BOX2", "c", "b"), ("goto", "b", "d"),
+        ("push", "BOX3", "d", "b")]
+
+
+def test_after_an_application_a_goal_list_whose_top_goal_holds_is_solved_at_once():
+    run, root, top = _run(AddListRelevance())
+    model, last = _after(run, root, *PLAN)
+    unneeded = _instance(run.goal_prover.problem.operators, "push", "BOX1", "c", "d")
+    goals = (Goal(unneeded.precondition(), unneeded), top)  # AT(BOX1, c) is false
+    solution = run._make(model, goals, None, (last,), last)
+    assert solution is not None and solution.goals == (top,)
+    assert len(run.tree.nodes) == 1  # push(BOX1, c, d) was never worked on
+
+
+def test_after_an_application_the_deepest_goal_that_holds_is_worked_on_next():
+    run, root, top = _run(AddListRelevance())
+    model, last = _after(run, root, *PLAN[:3])  # the robot and BOX3 at d
+    operators = run.goal_prover.problem.operators
+    unneeded = _instance(operators, "push", "BOX1", "c", "d")
+    away = _instance(operators, "goto", "d", "c")  # its precondition holds too
+    final = _instance(operators, *PLAN[3])  # and so does this one's, deeper
+    goals = tuple(Goal(i.precondition(), i) for i in (unneeded, away, final)) + (top,)
+    solution = run._make(model, goals, None, (last,), last)
+    # push(BOX3, d, b) is applied at once; going to c first would have undone ATR(d).
+    assert solution is not None and solution.plan == (last, final)
+    assert [node.goals for node in run.tree.nodes] == [goals[2:], (top,)]

@@ -24,12 +24,14 @@ def learned() -> Library:
     return library
 
 
-def test_the_five_part_goal_takes_at_most_half_the_nodes(robot, learned):
+def test_the_five_part_goal_takes_at_most_two_thirds_of_the_nodes(robot, learned):
+    """90 nodes against 157. (Half, 113 against 290, before means-ends itself dropped the
+    goals an application makes unnecessary, part of what a MACROP's table saved.)"""
     planner = Planner.create()
     without = planner.solve(robot["five-goals"])
     with_library = planner.solve(robot["five-goals"], library=learned)
     assert without.solved and with_library.solved
-    assert with_library.statistics.nodes * 2 <= without.statistics.nodes
+    assert with_library.statistics.nodes * 3 <= without.statistics.nodes * 2
     plan = [str(step) for step in with_library.plan]
     assert replay(robot["five-goals"], plan).valid
 

@@ -72,6 +72,35 @@ def test_an_operator_on_the_goal_list_takes_over_what_it_adds() -> None:
     assert _score(_node(subgoal, top)) == 1 + 1 == _score(_node(top))
 
 
+def test_an_add_atom_with_an_unbound_parameter_provides_nothing() -> None:
+    """go(B, y) on the list adds AT(y) for a y its proof has not chosen yet, so AT(C)
+    below it still needs go(B, C): AT(B) and AT(C) in the relaxed plan, not AT(B) only."""
+    go_from_b = OperatorInstance(GO, [(X, "B")])
+    subgoal = Goal(go_from_b.precondition(), go_from_b)
+    assert _score(_node(subgoal, _goal(("AT", "C")))) == 1 + 2
+
+
+def test_a_later_goal_binds_the_atoms_given_to_it_jointly() -> None:
+    """go(B, C) on the list gives LIT(C) to the goal below it, but that goal's LIT(v) and
+    ROAD(A, v) share v, and ROAD(A, C) is false: v = B, and LIT(B) costs go(A, B) (hadd
+    counts it apart from the AT(B) of go(B, C)'s precondition)."""
+    go_bc = OperatorInstance(GO, [(X, "B"), (Y, "C")])
+    v = Var("v")
+    lit_next_to_a = Goal(Exists([v], And([Atomic(("LIT", v)), Atomic(("ROAD", "A", v))])))
+    node = _node(Goal(go_bc.precondition(), go_bc), lit_next_to_a)
+    assert _score(node, estimate="add") == 1 + 1 + 1
+
+
+def test_a_given_atom_binds_a_later_goal_for_free() -> None:
+    """go(B, C) on the list gives LIT(C), and ROAD(C, C) holds: v = C costs nothing,
+    where v = B would cost go(A, B)."""
+    go_bc = OperatorInstance(GO, [(X, "B"), (Y, "C")])
+    v = Var("v")
+    lit_before_c = Goal(Exists([v], And([Atomic(("LIT", v)), Atomic(("ROAD", v, "C"))])))
+    node = _node(Goal(go_bc.precondition(), go_bc), lit_before_c)
+    assert _score(node, estimate="add") == 1 + 1
+
+
 def test_a_parameter_costs_its_cheapest_ground_atom() -> None:
     """go(x, C) needs AT(x) & ROAD(x, C) together: x = B costs one step, x = C two
     (AT(A) and ROAD(B, C) each cost nothing alone, but they do not share an x)."""
@@ -113,3 +142,18 @@ def test_cost_and_successors_are_weighted() -> None:
 def test_refuses_to_score_without_its_problem() -> None:
     with pytest.raises(TypeError, match="for_problem"):
         RelaxedPlanEvaluator().evaluate(_node(_goal(("AT", "C"))))
+
+
+def test_one_scorer_gives_each_model_its_own_costs() -> None:
+    """The costs kept per model (a search returns to a few models often) are never those
+    of another model, in whatever order the nodes come."""
+    scorer = evaluator_for_problem(RelaxedPlanEvaluator(), [GO], M0.initial)
+    at_b = M0.changed(frozenset({("AT", "A")}), frozenset({("AT", "B")}))
+    go_bc = OperatorInstance(GO, [(X, "B"), (Y, "C")])
+    top = _goal(("AT", "C"))
+    scores = [
+        scorer.evaluate(_node(*goals, model=model))
+        for model in (M0, at_b, M0, at_b)
+        for goals in ((top,), (Goal(go_bc.precondition(), go_bc), top))
+    ]
+    assert scores == [2, 2, 1, 1] * 2

@@ -90,10 +90,13 @@ class MeansEndsRun:
         A (model, goal list) already made is not made again: its node is the same
         problem, already in the tree (on depot, a quarter of the successors repeat one).
 
-        Proved preconditions are applied in a loop rather than by recursion, since a chain
-        of applications can be as long as the goal list.
+        After an application, goals a deeper goal makes unnecessary are dropped
+        (:meth:`_skip_achieved`). Proved preconditions are applied in a loop rather than
+        by recursion, since a chain of applications can be as long as the goal list.
         """
         while True:
+            if applied is not None:
+                goals = self._skip_achieved(model, goals)
             if (model, goals) in self.seen:
                 return None  # the same problem is already being worked on elsewhere
             self.seen.add((model, goals))
@@ -110,6 +113,19 @@ class MeansEndsRun:
                 return None  # a parameter of the effects left unbound, or a binding refused
             model, goals, parent = operator.apply(model), goals[1:], node
             plan, applied = (*plan, *operator.steps()), operator
+
+    def _skip_achieved(self, model: WorldModel, goals: tuple[Goal, ...]) -> tuple[Goal, ...]:
+        """The goal list from its deepest goal that ``model`` already satisfies (``goals``
+        when none below the first does). A goal-list operator is there to help achieve the
+        goal below it, so once an application makes a deeper goal true the operators
+        above it are not needed: STRIPS applies that goal's operator (or, at G0, is done)
+        instead of working through them. Only a changed model can make a deeper goal true
+        (each was unproved when it was pushed down), so only nodes made by an application
+        are checked; the proofs are cached per (model, goal)."""
+        for depth in range(len(goals) - 1, 0, -1):
+            if self.goal_prover.prove(model, goals[depth].formula).proved:
+                return goals[depth:]
+        return goals
 
     def _set_difference(self, node: Node, result: ProofResult) -> None:
         """The difference and relevant instances depend on the model and the first goal

@@ -3,7 +3,8 @@
 As in the paper (II.B, III.C, Figure 2): when a node is made, its first goal is tried by
 the prover. If it is proved, the operator whose precondition it was is applied with the
 bindings the proof found, which makes a new node (its first goal is tried at once, and so
-on). If not, the uncompleted proof becomes the node's difference and the relevant operator
+on; when the application made a deeper goal true, the goals above it are dropped, since
+their operators were there to achieve it). If not, the uncompleted proof becomes the node's difference and the relevant operator
 instances for it are computed. The evaluator then picks which node gets its next successor:
 the precondition of its next relevant instance pushed onto its goal list. Successors are
 made one at a time, so a node stays in the queue while it has relevant instances left.

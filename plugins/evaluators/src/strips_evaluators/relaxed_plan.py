@@ -5,32 +5,40 @@ the delete relaxation of forward planners (hadd, hFF) to means-ends nodes. The s
 are grounded once per problem by relaxed reachability from M0: every model a search
 reaches is made by applying operators to M0, so its facts and the instances applicable in
 its relaxation are among those found from M0. Per node, hadd runs from the model's facts
-over these ground instances; the goals are the atoms of every goal on the goal list, less
-those an operator earlier on the list adds (it is applied before that goal is needed).
+over these ground instances; the goals are the atoms of every goal on the goal list. An
+operator earlier on the list is applied before a later goal is needed, so the ground atoms
+it adds are free facts for that goal; each goal's atoms are bound jointly, over the
+reached facts and those free ones. (Matching a goal atom on its own against any add atom
+it might unify with let deep goal lists erase their later goals: ``drive`` adds
+``at(truck, ?z)``, which unifies every ``at(?x, ?y)`` of every precondition below it, so
+the deeper a list, the cheaper it looked, and means-ends on depot descended into
+subgoal chains it never climbed out of.)
 """
 
 from __future__ import annotations
 
 import heapq
 import math
-from collections import defaultdict
-from collections.abc import Iterator, Sequence
+from collections import ChainMap, OrderedDict, defaultdict
+from collections.abc import Iterator, Mapping, Sequence
 from typing import ClassVar
 
-from attrs import field, frozen, validators
+from attrs import define, field, frozen, validators
 
 from strips_evaluators.options import weight
 from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.node import Node
 from strips_framework.worldmodel.problem import OperatorSchema
-from strips_framework.worldmodel.world import InitialModel
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 #: Values of the parameters and variables of some atoms.
 Binding = dict[object, object]
 #: A goal's parameters get the cheapest of at most this many bindings: a goal with many
 #: unbound parameters would otherwise cost a join per node.
 MAX_BINDINGS = 200
+#: How many models' relaxed costs a search keeps (the ones used last).
+MODELS_KEPT = 256
 
 
 @frozen
@@ -97,6 +105,18 @@ class RelaxedPlanScorer:
         )
 
 
+@define
+class _ModelCosts:
+    """One model's hadd costs and achievers, and the cheapest facts found for goals in
+    it, by (goal atoms, atoms given by earlier goal-list operators)."""
+
+    cost: dict[int, float]
+    supporter: dict[int, int]
+    cheapest: dict[tuple[tuple[Atom, ...], frozenset[Atom]], list[int] | None] = field(
+        factory=dict
+    )
+
+
 class _RelaxedTask:
     """Ground facts (numbered), ground instances (precondition and add-list fact numbers),
     and what the estimate treats as free."""
@@ -108,6 +128,7 @@ class _RelaxedTask:
         self.needed_by: list[list[int]] = []
         self.free: set[tuple[str, int]] = set()
         self.index = _FactIndex(())
+        self._models: OrderedDict[WorldModel, _ModelCosts] = OrderedDict()
 
     @classmethod
     def ground(cls, operators: Sequence[OperatorSchema], initial: InitialModel) -> _RelaxedTask:
@@ -152,19 +173,47 @@ class _RelaxedTask:
         return number
 
     def estimate(self, node: Node, ff: bool) -> float:
-        cost, supporter = self._hadd(node)
+        known = self._of_model(node.model)
         goals: list[int] = []
-        for atoms in _goal_atoms(node, self.free):
-            best = self._cheapest(atoms, cost)
+        for atoms, provided in _goal_atoms(node, self.free):
+            key = (tuple(atoms), provided)
+            if key not in known.cheapest:
+                known.cheapest[key] = self._cheapest_given(atoms, provided, known.cost)
+            best = known.cheapest[key]
             if best is None:
                 return math.inf
             goals.extend(best)
         on_list = len(node.goals) - 1
         if not ff:
-            return on_list + sum(cost[g] for g in goals)
-        return on_list + len(self._relaxed_plan(goals, supporter))
+            return on_list + sum(known.cost[g] for g in goals)
+        return on_list + len(self._relaxed_plan(goals, known.supporter))
 
-    def _cheapest(self, atoms: list[Atom], cost: dict[int, float]) -> list[int] | None:
+    def _of_model(self, model: WorldModel) -> _ModelCosts:
+        """The hadd costs of ``model`` (and its goals' cheapest facts, filled in as they
+        are asked for): a node's successors share its model, and a means-ends search
+        keeps returning to a few models (201 in 3,000 nodes on depot 03), so they are
+        kept for the :data:`MODELS_KEPT` models used last."""
+        known = self._models.get(model)
+        if known is None:
+            known = _ModelCosts(*self._hadd(model))
+            self._models[model] = known
+            if len(self._models) > MODELS_KEPT:
+                self._models.popitem(last=False)
+        else:
+            self._models.move_to_end(model)
+        return known
+
+    def _cheapest_given(
+        self, atoms: list[Atom], provided: frozenset[Atom], cost: dict[int, float]
+    ) -> list[int] | None:
+        """:meth:`_cheapest` with the ``provided`` atoms free, less those atoms."""
+        given = {self.fact_ids[a] for a in provided if a in self.fact_ids}
+        if not given:
+            return self._cheapest(atoms, cost)
+        best = self._cheapest(atoms, ChainMap(dict.fromkeys(given, 0.0), cost))
+        return None if best is None else [f for f in best if f not in given]
+
+    def _cheapest(self, atoms: list[Atom], cost: Mapping[int, float]) -> list[int] | None:
         """The reachable ground facts for one goal's atoms under the binding of its
         parameters and variables with the least hadd sum (``None``: none reachable).
         At most :data:`MAX_BINDINGS` bindings are compared."""
@@ -180,12 +229,12 @@ class _RelaxedTask:
                 break
         return best
 
-    def _hadd(self, node: Node) -> tuple[dict[int, float], dict[int, int]]:
+    def _hadd(self, model: WorldModel) -> tuple[dict[int, float], dict[int, int]]:
         """hadd costs of the reachable facts, and each fact's cheapest achiever."""
         ids = self.fact_ids
         cost: dict[int, float] = {}
         queue: list[tuple[float, int]] = []
-        for atom in node.model.facts():
+        for atom in model.facts():
             number = ids.get(atom)
             if number is not None and number not in cost:
                 cost[number] = 0.0
@@ -258,7 +307,7 @@ class _FactIndex:
         atoms: list[Atom],
         constraints: list[tuple[bool, Atom]],
         binding: Binding | None = None,
-        reached: tuple[dict[Atom, int], dict[int, float]] | None = None,
+        reached: tuple[dict[Atom, int], Mapping[int, float]] | None = None,
     ) -> Iterator[Binding]:
         """Every binding of the atoms' parameters and variables to facts, most bound atom
         first; with ``reached`` (fact numbers and costs), to reached facts only."""
@@ -336,10 +385,6 @@ def _bind(atom: Atom, binding: Binding) -> Atom:
     return (atom[0], *(binding.get(t, t) if _open(t) else t for t in atom[1:]))
 
 
-def _matches(pattern: object, value: object) -> bool:
-    return pattern == value or _open(pattern) or _open(value)
-
-
 def _concluded_by_axioms(initial: InitialModel) -> set[tuple[str, int]]:
     """Predicates a non-unit clause of M0 concludes, or a derived fact (one resting on
     supports) holds: their atoms are derived, not added."""
@@ -372,26 +417,19 @@ def _asserted_atoms(formula: Formula) -> Iterator[Atom]:
             yield from _asserted_atoms(part.body)
 
 
-def _unifiable(atom: Atom, other: Atom) -> bool:
-    """Whether the atoms may be the same ground atom (variables and parameters match all)."""
-    return (
-        atom[0] == other[0]
-        and len(atom) == len(other)
-        and all(_matches(a, b) and _matches(b, a) for a, b in zip(atom[1:], other[1:]))
-    )
-
-
-def _goal_atoms(node: Node, free: set[tuple[str, int]]) -> Iterator[list[Atom]]:
-    """Per goal on the list, its atoms that need a relaxed plan: not free, no equality,
-    and not added by the operator of an earlier goal (applied before this one is needed)."""
-    provided: list[Atom] = []
+def _goal_atoms(
+    node: Node, free: set[tuple[str, int]]
+) -> Iterator[tuple[list[Atom], frozenset[Atom]]]:
+    """Per goal on the list, its atoms that need a relaxed plan (not free, no equality),
+    and the ground atoms the operators of earlier goals add (applied before this goal is
+    needed). An add atom with an unbound parameter provides nothing: which atom it adds
+    is decided by its precondition's proof, not yet made."""
+    provided: set[Atom] = set()
     for goal in node.goals:
         yield [
             atom
             for atom in _asserted_atoms(goal.formula)
-            if atom[0] != EQUALITY
-            and (atom[0], len(atom)) not in free
-            and not any(_unifiable(atom, add) for add in provided)
-        ]
+            if atom[0] != EQUALITY and (atom[0], len(atom)) not in free
+        ], frozenset(provided)
         if goal.operator is not None:
-            provided.extend(goal.operator.effects()[1])
+            provided.update(atom for atom in goal.operator.effects()[1] if is_ground(atom))
