@@ -515,10 +515,20 @@ class _Saturation:
             if self._answered(given) or self._subsumed(given):
                 given.dead = True
                 continue
-            cut = self._cut_by_units(given, (given.id,))
-            if cut is not given:  # a unit retained since it was queued cuts it
+            if self._simplifiable(given):
+                # An equation or unit retained since it was queued simplifies it: the
+                # simplified clause is queued in its place.
                 given.dead = True
-                self._add_new(cut)
+                self._add_new(
+                    PClause(
+                        given.literals,
+                        given.nvars,
+                        given.bindings,
+                        sos=given.sos,
+                        parents=(given.id,),
+                        label=given.label,
+                    )
+                )
                 continue
             self.given_clauses += 1
             self._process(given)
@@ -658,6 +668,13 @@ class _Saturation:
             label=clause.label,
         )
 
+    def _simplifiable(self, clause: PClause) -> bool:
+        """Whether a retained unit equation rewrites ``clause`` or a unit cuts it."""
+        if self.uses_equality and self.own.demodulators:
+            if self.own.demodulators.rewrite(clause.literals)[1]:
+                return True
+        return self._cut_by_units(clause, ()) is not clause
+
     def _unit_against(
         self, positive: bool, atom: tuple, bindings: AbstractSet[object]
     ) -> PClause | None:
@@ -749,7 +766,7 @@ class _Saturation:
             return
         simplified = self._cut_by_units(simplified, simplified.parents)
         if not simplified.literals:
-            if simplified.bindings not in self.answers:
+            if simplified.bindings not in self.answers and not self._done():
                 self.own.register(simplified)
                 self._record_refutation(simplified)
             return
