@@ -22,6 +22,18 @@ def status(text: str, effort: int, **options: object) -> str:
     return szs_status(problem, ResolutionProver(**options).prove(problem.task(effort)))
 
 
+def processed(text: str, effort: int = 10) -> tuple[set[str], set[str]]:
+    """The clauses a saturation of ``text`` processed within ``effort``: the live ones
+    and the dead (replaced) ones."""
+    attempt = _attempt(ResolutionProver(**SATURATE), parse_tptp(text).task(effort))
+    attempt.start(1)
+    attempt.advance(effort)
+    clauses = attempt.own.processed
+    return {str(c.to_clause()) for c in clauses if not c.dead}, {
+        str(c.to_clause()) for c in clauses if c.dead
+    }
+
+
 def test_a_unit_cuts_the_literals_it_refutes() -> None:
     # p(X, f(X)) cuts all three literals of the rule as it is imported, leaving q, which
     # meets ~q at once. Resolving them away one at a time takes 4 to 6 given clauses.
@@ -37,26 +49,19 @@ def test_a_unit_cuts_the_literals_it_refutes() -> None:
 def test_a_disequation_cuts_the_equation_either_way_round() -> None:
     # f(X) != X matches a = f(a) only read as f(a) = a; the cut leaves q when the clause
     # is picked, so it is never processed (superposition would derive q only from it).
-    task = parse_tptp("cnf(d, axiom, f(X) != X). cnf(e, axiom, a = f(a) | q).").task(10)
-    attempt = _attempt(ResolutionProver(**SATURATE), task)
-    attempt.start(1)
-    attempt.advance(10)
-    assert {str(c.to_clause()) for c in attempt.own.processed} == {"f(x0) != x0", "q"}
+    live, dead = processed("cnf(d, axiom, f(X) != X). cnf(e, axiom, a = f(a) | q).")
+    assert live | dead == {"f(x0) != x0", "q"}
 
 
 def test_a_given_clause_is_simplified_by_units_retained_after_it_was_queued() -> None:
     # Both input clauses are queued before any unit is retained; when picked, the rule
     # is cut by s(f(b)) to ~q(f(f(a))), and that cuts the first clause to r(f(f(b))):
     # neither original is ever processed.
-    task = parse_tptp(
+    live, dead = processed(
         "cnf(c, axiom, q(f(f(a))) | r(f(f(b)))). cnf(u, axiom, s(f(b))). "
         "cnf(k, axiom, ~s(f(b)) | ~q(f(f(a))))."
-    ).task(10)
-    attempt = _attempt(ResolutionProver(**SATURATE), task)
-    attempt.start(1)
-    attempt.advance(10)
-    processed = {str(c.to_clause()) for c in attempt.own.processed}
-    assert processed == {"s(f(b))", "~q(f(f(a)))", "r(f(f(b)))"}
+    )
+    assert live | dead == {"s(f(b))", "~q(f(f(a)))", "r(f(f(b)))"}
 
 
 def test_no_more_answers_than_asked_when_one_clause_gives_several() -> None:
@@ -74,15 +79,11 @@ def test_no_more_answers_than_asked_when_one_clause_gives_several() -> None:
 def test_a_new_equation_rewrites_the_clauses_kept_before_it() -> None:
     # p(c) is light and picked first; c = a is derived later and orients c -> a, so the
     # retained p(c) is replaced by p(a) (backward demodulation).
-    task = parse_tptp(
+    live, dead = processed(
         "cnf(k, axiom, p(c)). cnf(e, axiom, ~r | ~s | c = a). cnf(r, axiom, r). "
-        "cnf(s, axiom, s)."
-    ).task(50)
-    attempt = _attempt(ResolutionProver(**SATURATE), task)
-    attempt.start(1)
-    attempt.advance(50)
-    live = {str(c.to_clause()) for c in attempt.own.processed if not c.dead}
-    dead = {str(c.to_clause()) for c in attempt.own.processed if c.dead}
+        "cnf(s, axiom, s).",
+        effort=50,
+    )
     assert "c = a" in live
     assert "p(c)" in dead and "p(a)" in live
 
