@@ -517,19 +517,25 @@ class _Saturation:
                 continue
             if self._simplifiable(given):
                 # An equation or unit retained since it was queued simplifies it: the
-                # simplified clause is queued in its place.
+                # simplified clause is the given clause in its place (as in E; queued
+                # again, it would lose its turn).
                 given.dead = True
-                self._add_new(
-                    PClause(
-                        given.literals,
-                        given.nvars,
-                        given.bindings,
-                        sos=given.sos,
-                        parents=(given.id,),
-                        label=given.label,
-                    )
+                copy = PClause(
+                    given.literals,
+                    given.nvars,
+                    given.bindings,
+                    sos=given.sos,
+                    parents=(given.id,),
+                    label=given.label,
                 )
-                continue
+                simplified = self._prepared(copy)
+                if simplified is None:
+                    continue
+                if self._subsumed(simplified):
+                    simplified.dead = True
+                    continue
+                simplified.processed = True
+                given = simplified
             self.given_clauses += 1
             self._process(given)
         return self._done()
@@ -759,6 +765,13 @@ class _Saturation:
 
     def _add_new(self, clause: PClause) -> None:
         """Simplify a new set-of-support clause and queue it, or record a refutation."""
+        prepared = self._prepared(clause)
+        if prepared is not None:
+            self.queue.push(prepared)
+
+    def _prepared(self, clause: PClause) -> PClause | None:
+        """``clause`` simplified and registered, or ``None`` if it was deleted or was a
+        refutation (recorded)."""
         if clause.parents and not self.options.set_of_support:
             clause.sos = any(self._clause(parent).sos for parent in clause.parents)
         simplified = self._simplify(clause)
@@ -769,15 +782,15 @@ class _Saturation:
             if simplified.bindings not in self.answers and not self._done():
                 self.own.register(simplified)
                 self._record_refutation(simplified)
-            return
+            return None
         signature = (simplified.literals, simplified.bindings)
         if signature in self.seen or self._subsumed_by_unit(simplified):
-            return
+            return None
         if self.sld and self._rests_on_false_rigid_atom(simplified):
-            return
+            return None
         self.seen.add(signature)
         self.own.register(simplified)
-        self.queue.push(simplified)
+        return simplified
 
     def _simplify(self, clause: PClause) -> PClause | None:
         return _simplify(
