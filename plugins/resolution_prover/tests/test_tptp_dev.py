@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.formats.tptp import load_tptp, szs_answers, szs_status
+from strips_framework.formats.tptp import load_tptp, prove_tptp, szs_answers, szs_status
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.unify import substitute
 from strips_framework.worldmodel.proving import ProofTask
@@ -107,3 +107,21 @@ def test_question_answers_are_correct(path: Path, config: str) -> None:
     ]
     check = ProofTask(task.axioms, instance, effort=EFFORT)
     assert prover.prove(check).proved
+
+
+#: What a TPTP user gets for each question (``prove_tptp``): the conjecture's status, the
+#: original problem's read as a conjecture's.
+_AS_CONJECTURE = {"Unsatisfiable": "Theorem", "Theorem": "Theorem",
+                  "CounterSatisfiable": "CounterSatisfiable"}  # fmt: skip
+
+
+@needs_bench
+@pytest.mark.parametrize("path", _files("dev-questions"), ids=lambda p: p.stem)
+def test_every_question_gets_its_status(path: Path) -> None:
+    # A floor for all 13: the conjecture first, then the bounded answer search (a
+    # question whose answer search ran first used to spend the effort there).
+    problem = load_tptp(path)
+    status, answers = prove_tptp(ResolutionProver(), problem, EFFORT)
+    assert status == _AS_CONJECTURE[_expected()[problem.name.removesuffix(".q")]]
+    if problem.name in ANSWERED["auto"]:
+        assert answers

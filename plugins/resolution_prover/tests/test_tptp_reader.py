@@ -5,7 +5,13 @@ from __future__ import annotations
 import pytest
 
 from strips_framework.errors import InputError
-from strips_framework.formats.tptp import parse_tptp, prove_tptp, szs_report, szs_status
+from strips_framework.formats.tptp import (
+    ANSWER_SEARCH_FACTOR,
+    parse_tptp,
+    prove_tptp,
+    szs_report,
+    szs_status,
+)
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -19,7 +25,7 @@ from strips_framework.logic.formulas import (
     Var,
 )
 from strips_framework.logic.terms import Param
-from strips_framework.worldmodel.proving import ProofResult
+from strips_framework.worldmodel.proving import ProofResult, ProofTask
 from strips_resolution_prover import ResolutionProver
 
 X, Y = Var("X"), Var("Y")
@@ -153,6 +159,35 @@ def test_a_question_is_answered_definitely_or_refuted() -> None:
     # No instance follows and the conjecture itself does not: the answer is "no".
     false = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : r(X)).")
     assert prove_tptp(ResolutionProver(), false, 100) == ("CounterSatisfiable", None)
+
+
+class _Recording:
+    """The resolution prover, recording each task's effort and whether it has parameters."""
+
+    def __init__(self) -> None:
+        self.calls: list[tuple[bool, int, int]] = []
+
+    def prove(self, task: ProofTask) -> ProofResult:
+        result = ResolutionProver().prove(task)
+        asks = any(type(a) is Param for c in task.negated_goal for _, atom in c.literals for a in atom[1:])
+        self.calls.append((asks, task.effort, result.effort_used))
+        return result
+
+
+def test_the_conjecture_goes_first_and_bounds_the_answer_search() -> None:
+    # p(a) | p(b): the conjecture is proved at once, but no
+    # definite answer exists, so the answer search would spend the whole effort.
+    problem = parse_tptp("cnf(a, axiom, p(a) | p(b)).\nfof(q, question, ? [X] : p(X)).")
+    prover = _Recording()
+    assert prove_tptp(prover, problem, 10_000) == ("Theorem", None)
+    (plain, proof_effort, used), (asks, answer_effort, _) = prover.calls
+    assert not plain and asks
+    assert answer_effort == ANSWER_SEARCH_FACTOR * max(1, used) < 10_000
+    # A false conjecture has no answer to look for: one attempt only.
+    prover = _Recording()
+    false = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : r(X)).")
+    assert prove_tptp(prover, false, 10_000) == ("CounterSatisfiable", None)
+    assert [asks for asks, _, _ in prover.calls] == [False]
 
 
 def test_several_conjectures_are_proved_together() -> None:

@@ -6,7 +6,10 @@ the Knuth-Bendix ordering (:mod:`.kbo`), rewrites every instance ``lσ`` in a ne
 the original (recording the equation among its parents, for the proof); since each step
 goes down in a well-founded ordering, rewriting ends. This is what keeps equational
 problems (groups, set algebra) from drowning in paramodulants that only differ by
-rewritable subterms. Only forward: already retained clauses are not rewritten again.
+rewritable subterms. Forward, on every new clause, and backward: a new equation rewrites
+the retained clauses it applies to (:meth:`~strips_resolution_prover.prover._Saturation.
+_rewrite_retained`), which are replaced by their normal forms, as in E, so an equation
+such as ``c = a`` found late (SET018+4) simplifies the clauses that were kept before it.
 """
 
 from __future__ import annotations
@@ -35,20 +38,21 @@ class Demodulators:
     def __bool__(self) -> bool:
         return bool(self._rules)
 
-    def add(self, clause: PClause) -> None:
+    def add(self, clause: PClause) -> bool:
         """File ``clause`` if it is a positive unit equation without bindings that the
-        ordering orients (either way round)."""
+        ordering orients (either way round); whether it was filed."""
         if len(clause.literals) != 1 or clause.bindings:
-            return
+            return False
         positive, atom = clause.literals[0]
         if not positive or not is_equality(atom):
-            return
+            return False
         left, right = atom[1], atom[2]
         if greater(right, left):
             left, right = right, left
         elif not greater(left, right):
-            return
+            return False
         self._rules.setdefault(_key(left), []).append((left, right, clause))
+        return True
 
     def rewrite(self, literals: tuple[Literal, ...]) -> tuple[tuple[Literal, ...], list[int]]:
         """``literals`` in normal form, and the ids of the equations used (none: unchanged)."""

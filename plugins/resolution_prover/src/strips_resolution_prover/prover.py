@@ -209,14 +209,17 @@ class _Retained:
         clause.id = self.first_id + len(self.clauses)
         self.clauses.append(clause)
 
-    def retain(self, clause: PClause, selecting: bool, deletable: bool) -> None:
+    def retain(self, clause: PClause, selecting: bool, deletable: bool) -> bool:
+        """Index ``clause``; whether it is a new demodulator."""
         self.processed.append(clause)
+        rule = False
         if any(pos and is_equality(atom) for pos, atom in clause.literals):
             self.equational.append(clause)
-            self.demodulators.add(clause)
+            rule = self.demodulators.add(clause)
         self.subsumption.add(clause, deletable=deletable)
         for i in eligible(clause.literals, selecting):
             self.index.add(clause, i)
+        return rule
 
 
 class _Axioms(_Retained):
@@ -512,6 +515,27 @@ class _Saturation:
             if self._answered(given) or self._subsumed(given):
                 given.dead = True
                 continue
+            if self._simplifiable(given):
+                # An equation or unit retained since it was queued simplifies it: the
+                # simplified clause is the given clause in its place (as in E; queued
+                # again, it would lose its turn).
+                given.dead = True
+                copy = PClause(
+                    given.literals,
+                    given.nvars,
+                    given.bindings,
+                    sos=given.sos,
+                    parents=(given.id,),
+                    label=given.label,
+                )
+                simplified = self._prepared(copy)
+                if simplified is None:
+                    continue
+                if self._subsumed(simplified):
+                    simplified.dead = True
+                    continue
+                simplified.processed = True
+                given = simplified
             self.given_clauses += 1
             self._process(given)
         return self._done()
@@ -533,7 +557,8 @@ class _Saturation:
         for victim in self.own.subsumption.subsumed_by(given, self.work):
             victim.dead = True
             self.own.subsumption.note_deleted()
-        self._retain(given)
+        if self._retain(given):
+            self._rewrite_retained(given)
         renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in given.literals)
         if self.sld:
             shared = self.options.goal_selection == "fewest-shared"
@@ -617,6 +642,52 @@ class _Saturation:
             clause, self.hidden
         ) or self.own.subsumption.is_subsumed_by_unit(clause)
 
+    def _cut_by_units(self, clause: PClause, parents: tuple[int, ...]) -> PClause:
+        """``clause`` without the literals whose complements are instances of retained
+        unit clauses (E's simplify-reflect, unit deletion): resolving with the unit gives
+        the clause without the literal, which subsumes it, so the shorter clause replaces
+        it at no loss of completeness. On a theory such as a group's, written with a
+        ternary ``product`` and a Skolem function for its totality, most new clauses
+        carry a literal that a unit settles (GRP012+5). ``parents``: the premises of the
+        result besides the units used (the clause's own, or the clause itself)."""
+        bindings = set(clause.bindings)
+        kept: list[Literal] = []
+        used: list[int] = []
+        for positive, atom in clause.literals:
+            unit = self._unit_against(not positive, atom, bindings)
+            if unit is None and is_equality(atom):  # s = t is t = s
+                unit = self._unit_against(not positive, (atom[0], atom[2], atom[1]), bindings)
+            if unit is None:
+                kept.append((positive, atom))
+            else:
+                used.append(unit.id)
+        if not used:
+            return clause
+        numbering: dict[int, int] = {}
+        literals = tuple((pos, renumber(atom, numbering)) for pos, atom in kept)
+        return PClause(
+            literals,
+            len(numbering),
+            clause.bindings,
+            sos=clause.sos,
+            parents=(*parents, *used),
+            label=clause.label,
+        )
+
+    def _simplifiable(self, clause: PClause) -> bool:
+        """Whether a retained unit equation rewrites ``clause`` or a unit cuts it."""
+        if self.uses_equality and self.own.demodulators:
+            if self.own.demodulators.rewrite(clause.literals)[1]:
+                return True
+        return self._cut_by_units(clause, ()) is not clause
+
+    def _unit_against(
+        self, positive: bool, atom: tuple, bindings: AbstractSet[object]
+    ) -> PClause | None:
+        return self.axioms.subsumption.unit_matching(
+            positive, atom, bindings, self.hidden
+        ) or self.own.subsumption.unit_matching(positive, atom, bindings)
+
     def _subsumed(self, clause: PClause) -> bool:
         return self.axioms.subsumption.is_subsumed(
             clause, self.work, self.hidden
@@ -628,10 +699,42 @@ class _Saturation:
 
     # -- clause bookkeeping ---------------------------------------------------------------
 
-    def _retain(self, clause: PClause) -> None:
-        """Make ``clause`` a partner for later given clauses."""
-        deletable = clause.sos or not self.options.set_of_support
-        self.own.retain(clause, self.selecting, deletable)
+    def _deletable(self, clause: PClause) -> bool:
+        """Whether ``clause`` may be replaced: under a set of support, usable clauses
+        never are (they are the fixed world model)."""
+        return clause.sos or not self.options.set_of_support
+
+    def _retain(self, clause: PClause) -> bool:
+        """Make ``clause`` a partner for later given clauses; whether it is a new
+        demodulator."""
+        return self.own.retain(clause, self.selecting, self._deletable(clause))
+
+    def _rewrite_retained(self, rule: PClause) -> None:
+        """Backward demodulation: each retained clause that the new unit equation ``rule``
+        rewrites is replaced by its rewritten form, which goes back into the queue (the
+        original is dead to every index)."""
+        rewriter = Demodulators()
+        rewriter.add(rule)
+        for clause in self.own.processed:
+            if clause.dead or clause is rule or not self._deletable(clause):
+                continue
+            literals, used = rewriter.rewrite(clause.literals)
+            if not used:
+                continue
+            clause.dead = True
+            self.own.subsumption.note_deleted()
+            numbering: dict[int, int] = {}
+            renumbered = tuple((pos, renumber(atom, numbering)) for pos, atom in literals)
+            self._add_new(
+                PClause(
+                    renumbered,
+                    len(numbering),
+                    clause.bindings,
+                    sos=clause.sos,
+                    parents=(clause.id, rule.id),
+                    label=clause.label,
+                )
+            )
 
     def _add_axiom(self, clause: PClause) -> None:
         simplified = self._simplify(clause)
@@ -662,24 +765,32 @@ class _Saturation:
 
     def _add_new(self, clause: PClause) -> None:
         """Simplify a new set-of-support clause and queue it, or record a refutation."""
+        prepared = self._prepared(clause)
+        if prepared is not None:
+            self.queue.push(prepared)
+
+    def _prepared(self, clause: PClause) -> PClause | None:
+        """``clause`` simplified and registered, or ``None`` if it was deleted or was a
+        refutation (recorded)."""
         if clause.parents and not self.options.set_of_support:
             clause.sos = any(self._clause(parent).sos for parent in clause.parents)
         simplified = self._simplify(clause)
         if simplified is None:
             return
+        simplified = self._cut_by_units(simplified, simplified.parents)
         if not simplified.literals:
-            if simplified.bindings not in self.answers:
+            if simplified.bindings not in self.answers and not self._done():
                 self.own.register(simplified)
                 self._record_refutation(simplified)
-            return
+            return None
         signature = (simplified.literals, simplified.bindings)
         if signature in self.seen or self._subsumed_by_unit(simplified):
-            return
+            return None
         if self.sld and self._rests_on_false_rigid_atom(simplified):
-            return
+            return None
         self.seen.add(signature)
         self.own.register(simplified)
-        self.queue.push(simplified)
+        return simplified
 
     def _simplify(self, clause: PClause) -> PClause | None:
         return _simplify(

@@ -13,11 +13,11 @@ candidate before any matching is tried. The matcher (:func:`_match`) is bounded 
 from __future__ import annotations
 
 from collections.abc import Iterator
-from itertools import product
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Term
+from strips_resolution_prover.discrimination import DiscriminationTree
 from strips_resolution_prover.pclause import PClause
 
 
@@ -164,36 +164,6 @@ def subsumes(c: PClause, d: PClause, work: MatchWork | None = None) -> bool:
     return _match(c.literals, d.literals, MatchWork() if work is None else work)
 
 
-#: How many leading argument positions key a non-ground unit by their top symbols (E's
-#: fingerprint indexing samples positions the same way); a literal is looked up under at
-#: most 2**k keys, one per choice of its symbol or "a variable" at each position.
-UNIT_KEY_POSITIONS = 3
-
-
-def _tops(atom: tuple) -> tuple[object, ...]:
-    """The top symbols of the first :data:`UNIT_KEY_POSITIONS` arguments, ``None`` for a
-    variable."""
-    tops: list[object] = []
-    for arg in atom[1 : 1 + UNIT_KEY_POSITIONS]:
-        kind = type(arg)
-        tops.append(arg[0] if kind is tuple else None if kind is int else arg)
-    return tuple(tops)
-
-
-def _unit_key(positive: bool, atom: tuple) -> tuple[object, ...]:
-    """A unit's index key: its predicate key and its :func:`_tops`."""
-    return positive, atom[0], len(atom), _tops(atom)
-
-
-def _generalization_keys(positive: bool, atom: tuple) -> Iterator[tuple[object, ...]]:
-    """The keys of the units that may match ``atom``: at each position its own top symbol
-    or a variable (a symbol of the unit never matches a variable of the target, which
-    stands for itself here)."""
-    choices = [(top,) if top is None else (top, None) for top in _tops(atom)]
-    for tops in product(*choices):
-        yield positive, atom[0], len(atom), tops
-
-
 def _is_ground(term: Term) -> bool:
     """Whether ``term`` has no variables (parameters match only themselves, like constants)."""
     kind = type(term)
@@ -210,8 +180,9 @@ class SubsumptionIndex:
     - Ground units are kept in a hash table by literal: a ground unit subsumes exactly the
       clauses containing its literal, so the check is one lookup per literal. World models
       are mostly ground facts, so this is where STRIPS's checks end.
-    - Other units are filed by :func:`_unit_key` (the top symbols of their leading
-      arguments) and found under :func:`_generalization_keys`.
+    - Other units are filed in a discrimination tree per sign
+      (:mod:`~strips_resolution_prover.discrimination`), which finds the few whose
+      symbols fit a literal.
     - Longer clauses are filed under the key of their first literal and their first
       parameter binding (``None`` if they made none): a subsumer's keys and bindings are
       subsets of the subsumed clause's, so forward subsumption of ``d`` only looks at the
@@ -225,7 +196,7 @@ class SubsumptionIndex:
 
     def __init__(self) -> None:
         self._ground_units: dict[Literal, list[PClause]] = {}
-        self._units: dict[tuple[object, ...], list[PClause]] = {}
+        self._units = {sign: DiscriminationTree[PClause]() for sign in (True, False)}
         self._by_first_key: dict[tuple[object, ...], list[PClause]] = {}
         self._by_key: dict[object, list[PClause]] = {}
         self._dead = 0
@@ -238,7 +209,7 @@ class SubsumptionIndex:
             if _is_ground(atom):
                 self._ground_units.setdefault(literal, []).append(clause)
             else:
-                self._units.setdefault(_unit_key(positive, atom), []).append(clause)
+                self._units[positive].add(atom, clause)
         else:
             binding = clause.bindings[0] if clause.bindings else None
             first_key = (positive, atom[0], len(atom), binding)
@@ -251,27 +222,40 @@ class SubsumptionIndex:
         """Whether a unit clause matches a literal of ``d``. Clauses whose ids are in
         ``hidden`` are not there (a session's M0 clauses that the model does not see)."""
         bindings = set(d.bindings)
-        for literal in d.literals:
-            for unit in self._ground_units.get(literal, ()):
-                if (
-                    not unit.dead
-                    and unit.id not in hidden
-                    and (not unit.bindings or set(unit.bindings) <= bindings)
-                ):
-                    return True
-        if not self._units:
-            return False
-        for positive, atom in d.literals:
-            for unit_key in _generalization_keys(positive, atom):
-                for unit in self._units.get(unit_key, ()):
-                    if (
-                        not unit.dead
-                        and unit.id not in hidden
-                        and match_term(unit.literals[0][1], atom, {})
-                        and (not unit.bindings or set(unit.bindings) <= bindings)
-                    ):
-                        return True
-        return False
+        return any(
+            self.unit_matching(positive, atom, bindings, hidden) is not None
+            for positive, atom in d.literals
+        )
+
+    def unit_matching(
+        self,
+        positive: bool,
+        atom: tuple,
+        bindings: AbstractSet[object],
+        hidden: AbstractSet[int] = frozenset(),
+    ) -> PClause | None:
+        """A live unit clause of sign ``positive`` whose atom matches ``atom`` and whose
+        parameter bindings are among ``bindings``, if one is retained: it subsumes a
+        clause with the literal ``(positive, atom)``, and it cuts the opposite literal
+        out of one (:meth:`~strips_resolution_prover.prover._Saturation._cut_by_units`)."""
+        for unit in self._ground_units.get((positive, atom), ()):
+            if self._usable(unit, bindings, hidden):
+                return unit
+        units = self._units[positive]
+        if not units:
+            return None
+        for unit in units.generalizations(atom):
+            if self._usable(unit, bindings, hidden) and match_term(unit.literals[0][1], atom, {}):
+                return unit
+        return None
+
+    @staticmethod
+    def _usable(unit: PClause, bindings: AbstractSet[object], hidden: AbstractSet[int]) -> bool:
+        return (
+            not unit.dead
+            and unit.id not in hidden
+            and (not unit.bindings or set(unit.bindings) <= bindings)
+        )
 
     def is_subsumed(
         self, d: PClause, work: MatchWork, hidden: AbstractSet[int] = frozenset()
@@ -304,6 +288,8 @@ class SubsumptionIndex:
         self._dead += 1
         if self._dead > 256:
             self._dead = 0
-            for table in (self._ground_units, self._units, self._by_first_key, self._by_key):
+            for table in (self._ground_units, self._by_first_key, self._by_key):
                 for key, clauses in table.items():
                     table[key] = [c for c in clauses if not c.dead]
+            for units in self._units.values():
+                units.prune(lambda c: not c.dead)
