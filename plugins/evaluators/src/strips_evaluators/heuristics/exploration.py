@@ -13,15 +13,12 @@ the landmark-count heuristic runs the reference only.
 from __future__ import annotations
 
 import math
-import os
 from heapq import heappop, heappush
 from types import ModuleType
 from typing import Protocol
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, start_exploration
-
-#: Set to 1 to run the pure-Python explorations even where the compiled ones are built.
-PURE_PYTHON_SWITCH = "STRIPS_PURE_PYTHON"
+from strips_framework.compiled import compiled_module as shared_compiled_module
 
 
 class Explorer(Protocol):
@@ -37,21 +34,9 @@ class Explorer(Protocol):
 
 
 def compiled_module(compiled: bool | None = None) -> ModuleType | None:
-    """The compiled module when it is built (and ``compiled`` is not False, nor the
-    environment switch set), else ``None``; ``compiled=True`` insists on it
-    (ImportError when it is not built)."""
-    if compiled is None:
-        compiled = not os.environ.get(PURE_PYTHON_SWITCH)
-        if compiled:
-            try:
-                from strips_evaluators.heuristics import _explore
-            except ImportError:
-                return None
-    if not compiled:
-        return None
-    from strips_evaluators.heuristics import _explore
-
-    return _explore
+    """The compiled module when it is built (see
+    :func:`strips_framework.compiled.compiled_module` for ``compiled``), else ``None``."""
+    return shared_compiled_module("strips_evaluators.heuristics._explore", compiled)
 
 
 def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
