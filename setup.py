@@ -7,10 +7,11 @@ setup(
     ext_modules=cythonize(
         [
             Extension(
-                "strips_framework.forward._successors",
-                ["src/strips_framework/forward/_successors.pyx"],
+                f"strips_framework.forward.{name}",
+                [f"src/strips_framework/forward/{name}.pyx"],
                 optional=True,  # no compiler: the pure-Python reference runs
             )
+            for name in ("_successors", "_lazy")
         ],
         language_level=3,
     )
