@@ -9,7 +9,7 @@ second list; the two lists alternate and the preferred one gets ``boost`` extra 
 each time an expanded state's h is lower than any before it (not at the initial state;
 Fast Downward's defaults: alternation, boost 1000).
 
-The loop runs compiled (``_lazy.pyx``) when it is built; :meth:`LazyGreedySearch.reference_run`
+The loop runs compiled (``_search.pyx``) when it is built; :meth:`LazyGreedySearch.reference_run`
 is the pure-Python reference it is compared with, which ``STRIPS_PURE_PYTHON=1`` picks.
 """
 
@@ -39,7 +39,7 @@ class LazyGreedySearch(ForwardStrategy):
     boost: int
 
     def run(self, run: SearchRun) -> int | None:
-        module = compiled_module("strips_framework.forward._lazy")
+        module = compiled_module("strips_framework.forward._search")
         if module is None:
             return self.reference_run(run)
         return module.lazy_greedy(run, self._evaluator(run), self.preferred, self.boost)

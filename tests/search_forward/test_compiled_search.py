@@ -1,7 +1,8 @@
-"""The compiled loop of lazy greedy search (``forward/_lazy.pyx``) against its pure-Python
-reference (:meth:`LazyGreedySearch.reference_run`): the same status, plan and counts, with
-and without preferred operators, on the hand-written PDDL tasks and the first two tasks of
-every shared IPC domain (skipped without ``shared/bench/ipc``).
+"""The compiled loops of lazy greedy and eager best-first search (``forward/_search.pyx``)
+against their pure-Python references (``reference_run``): the same status, plan and
+counts, with and without preferred operators, for lazy greedy search, A*, weighted A* and
+eager greedy search, on the hand-written PDDL tasks and the first two tasks of every
+shared IPC domain (skipped without ``shared/bench/ipc``).
 
 Expansions depend on every tie the open lists break and on when the preferred list is
 boosted, so any difference in the order of pops shows. The estimator is goal counting
@@ -16,7 +17,8 @@ from pathlib import Path
 import pytest
 from shared_bench import shared_bench
 
-from strips_framework.forward.base import SearchRun
+from strips_framework.forward.base import ForwardStrategy, SearchRun
+from strips_framework.forward.eager import AStarSearch, GreedySearch, WeightedAStarSearch
 from strips_framework.forward.lazy import LazyGreedySearch
 from strips_framework.forward.successors import SuccessorGenerator
 from strips_framework.grounding import ground
@@ -48,28 +50,43 @@ class GoalCount:
         ]
 
 
-class ReferenceLazy(LazyGreedySearch):
-    def run(self, run: SearchRun) -> int | None:
-        return self.reference_run(run)
+def reference(strategy: ForwardStrategy) -> ForwardStrategy:
+    """``strategy`` with its pure-Python loop."""
+    class Reference(type(strategy)):  # type: ignore[misc]
+        def run(self, run: SearchRun) -> int | None:
+            return self.reference_run(run)
+
+    return Reference(**{name: getattr(strategy, name) for name in strategy.FIELDS})
+
+
+STRATEGIES = [
+    LazyGreedySearch(),
+    LazyGreedySearch(preferred=True, boost=3),
+    LazyGreedySearch(preferred=False, boost=0),
+    AStarSearch(),
+    WeightedAStarSearch(weight=3.0),
+    GreedySearch(),
+    GreedySearch(preferred=True, boost=5),
+    GreedySearch(preferred=False),
+]
 
 
 def assert_same_search(task: GroundTask) -> None:
-    for preferred, boost in ((True, 1000), (True, 3), (False, 0)):
+    for strategy in STRATEGIES:
         results = [
-            search.search_task(task, GoalCount(task), Limits(time=60, expansions=2000))
-            for search in (LazyGreedySearch(preferred=preferred, boost=boost),
-                           ReferenceLazy(preferred=preferred, boost=boost))
+            search.search_task(task, GoalCount(task), Limits(time=60, expansions=1500))
+            for search in (strategy, reference(strategy))
         ]
         compiled, python = (
             (r.status, r.plan, r.statistics.expanded, r.statistics.evaluated,
-             r.statistics.generated, r.statistics.dead_ends)
+             r.statistics.generated, r.statistics.dead_ends, r.statistics.reopened)
             for r in results
         )
-        assert compiled == python
+        assert compiled == python, strategy
 
 
-def test_the_compiled_loop_is_built():
-    from strips_framework.forward import _lazy  # noqa: F401
+def test_the_compiled_loops_are_built():
+    from strips_framework.forward import _search  # noqa: F401
 
 
 @pytest.mark.parametrize("name", LOCAL)
