@@ -100,13 +100,15 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
     that have a bucket: most pushes are a list append, and the heap only sees each
     distinct cost once. A bucket is a stack, last in first out, as Fast Downward's bucket
     queue is: among facts of equal cost the one reached last goes first (a fact reached
-    at the cost being taken, by a zero-cost operator, comes out next). The order decides
+    at the cost being taken, by a zero-cost operator, comes out next), and the state's
+    facts go in in causal-graph order (:mod:`.causal_order`). The order decides
     which of several equally cheap operators becomes a supporter, and so the relaxed
     plan, the preferred operators and LM-cut's landmarks; following Fast Downward's
     order keeps search behaviour close to its (``docs/heuristics.md``).
     """
     pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
     start, cost = start_exploration(relaxed, state)
+    start.sort(key=relaxed.start_rank.__getitem__)  # causal order: see .causal_order
     supporter = [IN_STATE] * relaxed.num_facts
     accumulator = relaxed.accumulator[:]
     bits = relaxed.count_bits
