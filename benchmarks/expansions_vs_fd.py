@@ -31,6 +31,8 @@ from pathlib import Path
 
 from shared_bench import shared_bench
 
+from strips_framework.pddl import find_domain
+
 DOMAINS = "blocks,gripper,logistics,miconic,depot,satellite,elevators"
 #: Per --search: our config file (None: the default) and Fast Downward's search.
 SEARCHES = {
@@ -93,7 +95,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 problem = bench / domain / f"task{index:02d}.pddl"
                 if not problem.exists():
                     continue
-                files = [str(bench / domain / "domain.pddl"), str(problem)]
+                files = [str(find_domain(problem)), str(problem)]  # openstacks: one per task
                 ours = _run([*strips, *files], OURS, args.timeout, scratch)
                 fd = _run([str(venv / "bin" / "python"), str(scripts[0]), *files, "--search",
                            fd_search], FD, args.timeout, scratch)
