@@ -17,10 +17,11 @@ import pytest
 from random_tasks import random_task
 from shared_bench import shared_bench
 
-from strips_evaluators.heuristics.exploration import PURE_PYTHON_SWITCH, explorer
+from strips_evaluators.heuristics.exploration import explorer
 from strips_evaluators.heuristics.ff import FFHeuristic
 from strips_evaluators.heuristics.lmcut import CompiledLMCutEstimator, LMCutHeuristic
 from strips_evaluators.heuristics.relaxation import relax
+from strips_framework.compiled import PURE_PYTHON_SWITCH
 from strips_framework.forward.eager import AStarSearch, GreedySearch
 from strips_framework.forward.lazy import LazyGreedySearch
 from strips_framework.grounding import ground

@@ -147,9 +147,13 @@ def test_lmcut_breaks_supporter_ties_at_the_goal_zone_border(make_task) -> None:
 def test_ff_supporter_ties_go_to_the_fact_reached_last(make_task) -> None:
     """``p`` and ``q`` both hold, and ``x`` costs 1 through either operator. Facts of
     equal cost leave the queue last in, first out, as in Fast Downward: ``q`` (queued
-    after ``p``) goes first, so ``from-q`` reaches ``x`` first, becomes its supporter and
-    the preferred operator."""
-    task = make_task([("from-p", "p", "x", ""), ("from-q", "q", "x", "")], init="p q", goal="x")
+    after ``p``, which influences it through ``spoil``: causal order) goes first, so
+    ``from-q`` reaches ``x`` first, becomes its supporter and the preferred operator."""
+    task = make_task(
+        [("from-p", "p", "x", ""), ("from-q", "q", "x", ""), ("spoil", "p", "", "q")],
+        init="p q",
+        goal="x",
+    )
     value, preferred = HEURISTICS["ff"]().for_task(task).estimate_with_preferred(task.init)
     assert value == 1
     assert [task.operators[i].name for i in preferred] == ["from-q"]

@@ -7,6 +7,9 @@ again on a cheaper path is updated, and reopened if it was already expanded, by 
 strategies that care about cost (A*, weighted A*); greedy search keeps the first path.
 With ``preferred = true``, states reached by one of the expanded state's preferred
 operators also go into a second open list, and the two are alternated.
+
+The loop runs compiled (``_search.pyx``) when it is built; :meth:`EagerSearch.reference_run`
+is the pure-Python reference it is compared with, which ``STRIPS_PURE_PYTHON=1`` picks.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ import math
 from typing import ClassVar
 
 from strips_framework.capabilities import ADMISSIBLE_HEURISTIC, OPTIMAL, Requirement
+from strips_framework.compiled import compiled_module
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.openlists import open_list
 from strips_framework.forward.space import NO_PARENT
@@ -32,6 +36,16 @@ class EagerSearch(ForwardStrategy):
         raise NotImplementedError
 
     def run(self, run: SearchRun) -> int | None:
+        module = compiled_module("strips_framework.forward._search")
+        if module is None:
+            return self.reference_run(run)
+        preferred_of = run.estimator.estimate_with_preferred if self.preferred else None
+        return module.eager(
+            run, run.estimator.estimate, preferred_of, self.key, self.reopen, self.boost
+        )
+
+    def reference_run(self, run: SearchRun) -> int | None:
+        """The search in Python (the compiled loop's reference)."""
         task, space, budget = run.task, run.space, run.budget
         estimate = run.estimator.estimate
         preferred_of = run.estimator.estimate_with_preferred if self.preferred else None

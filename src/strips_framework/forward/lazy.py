@@ -8,13 +8,18 @@ instead of one per successor. A popped pair whose state was already reached is d
 second list; the two lists alternate and the preferred one gets ``boost`` extra turns
 each time an expanded state's h is lower than any before it (not at the initial state;
 Fast Downward's defaults: alternation, boost 1000).
+
+The loop runs compiled (``_search.pyx``) when it is built; :meth:`LazyGreedySearch.reference_run`
+is the pure-Python reference it is compared with, which ``STRIPS_PURE_PYTHON=1`` picks.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from typing import ClassVar
 
+from strips_framework.compiled import compiled_module
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.openlists import open_list
 from strips_framework.forward.space import NO_PARENT
@@ -34,15 +39,26 @@ class LazyGreedySearch(ForwardStrategy):
     boost: int
 
     def run(self, run: SearchRun) -> int | None:
-        task, space, budget = run.task, run.space, run.budget
+        module = compiled_module("strips_framework.forward._search")
+        if module is None:
+            return self.reference_run(run)
+        return module.lazy_greedy(run, self._evaluator(run), self.preferred, self.boost)
+
+    def _evaluator(self, run: SearchRun) -> Callable[[int], tuple[float, Sequence[int]]]:
+        """h and the preferred operators of a state (none unless ``preferred``)."""
         if self.preferred:
-            evaluate = run.estimator.estimate_with_preferred
-        else:
-            estimate = run.estimator.estimate
+            return run.estimator.estimate_with_preferred
+        estimate = run.estimator.estimate
 
-            def evaluate(state: int) -> tuple[float, tuple[int, ...]]:
-                return estimate(state), ()
+        def evaluate(state: int) -> tuple[float, tuple[int, ...]]:
+            return estimate(state), ()
 
+        return evaluate
+
+    def reference_run(self, run: SearchRun) -> int | None:
+        """The search in Python (the compiled loop's reference)."""
+        task, space, budget = run.task, run.space, run.budget
+        evaluate = self._evaluator(run)
         applicable, successor = space.successors.applicable, space.successor
         ids, states, add, goal = space.ids, space.states, space.add, task.goal_mask
         # An open entry is a (parent, operator) pair packed into one int.

@@ -12,7 +12,7 @@ from __future__ import annotations
 from array import array
 from collections.abc import Callable
 
-from strips_framework.forward.successors import SuccessorGenerator
+from strips_framework.forward.successors import successor_generator
 from strips_framework.grounding.task import GroundTask
 
 NO_PARENT = -1
@@ -21,7 +21,7 @@ NO_PARENT = -1
 class StateSpace:
     def __init__(self, task: GroundTask) -> None:
         self.task = task
-        self.successors = SuccessorGenerator(task)
+        self.successors = successor_generator(task)
         self.ids: dict[int, int] = {}
         self.states: list[int] = []
         self.parents = array("l")

@@ -6,13 +6,38 @@ other operators need, so that the buckets stay small. A state looks only into th
 buckets of the key facts it holds (walking its set bits, lowest first) and tests the
 full preconditions of the operators there. Operators without positive preconditions are
 tested in every state. The order is deterministic: by key fact, then operator number.
+
+This class is the pure-Python reference. :func:`successor_generator` gives the compiled
+one (``_successors.pyx``, built by ``pip install`` with Cython) when it is built and
+:data:`~strips_framework.compiled.PURE_PYTHON_SWITCH` is not set: the same layout over C
+arrays, with the same operators in the same order, so searches expand the same states.
 """
 
 from __future__ import annotations
 
 from collections import Counter
+from typing import Protocol
 
+from strips_framework.compiled import compiled_module
 from strips_framework.grounding.task import GroundTask
+
+
+class Successors(Protocol):
+    """What a state space needs of a successor generator."""
+
+    keep: tuple[int, ...]
+    add: tuple[int, ...]
+    effects: tuple[tuple[tuple[int, int, int, int], ...], ...] | None
+
+    def applicable(self, state: int) -> list[int]: ...
+
+
+def successor_generator(task: GroundTask, compiled: bool | None = None) -> Successors:
+    """The compiled generator of ``task`` when it is built, else the reference (``compiled``
+    as in :func:`~strips_framework.compiled.compiled_module`)."""
+    reference = SuccessorGenerator(task)
+    module = compiled_module("strips_framework.forward._successors", compiled)
+    return reference if module is None else module.SuccessorGenerator(reference, task)
 
 
 class SuccessorGenerator:

@@ -61,6 +61,8 @@ cdef class Explorer:
     cdef int* goal
     cdef int* is_goal
     cdef int* operator
+    # The task's facts in the order _explore pushes a state's (RelaxedTask.start_rank).
+    cdef int* start_order
     # Per relaxed operator, the facts a state must hold and lack for its effect to
     # happen (its real operator's precondition and the effect's condition).
     cdef int* need_start
@@ -108,6 +110,8 @@ cdef class Explorer:
         self.num_goals = len(relaxed.goal)
         self.is_goal = _ints([1 if flag else 0 for flag in relaxed.is_goal])
         self.operator = _ints(relaxed.operator)
+        order = sorted(range(relaxed.true_fact), key=relaxed.start_rank.__getitem__)
+        self.start_order = _ints(order)
         starts, facts_needed = [0], []
         for mask in relaxed.pre_mask:
             facts_needed.extend(_bits(mask))
@@ -147,6 +151,7 @@ cdef class Explorer:
         free(self.goal)
         free(self.is_goal)
         free(self.operator)
+        free(self.start_order)
         free(self.need_start)
         free(self.need)
         free(self.lack_start)
@@ -229,14 +234,9 @@ cdef class Explorer:
         for i in range(self.num_ops):
             self.remaining[i] = self.pre_count[i]
             self.accumulated[i] = self.op_cost[i] if additive else 0
-        for i in range(self.num_bytes):
-            byte = data[i]
-            while byte:
-                bit = 0
-                while not (byte >> bit) & 1:
-                    bit += 1
-                byte &= byte - 1
-                fact = i * 8 + bit
+        for i in range(self.true_fact):  # in causal order, as the reference
+            fact = self.start_order[i]
+            if (data[fact >> 3] >> (fact & 7)) & 1:
                 self.cost[fact] = 0
                 self._push(&size, &order, 0, fact)
         self.cost[self.true_fact] = 0

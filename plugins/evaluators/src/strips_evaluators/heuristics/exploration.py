@@ -13,15 +13,12 @@ the landmark-count heuristic runs the reference only.
 from __future__ import annotations
 
 import math
-import os
 from heapq import heappop, heappush
 from types import ModuleType
 from typing import Protocol
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, start_exploration
-
-#: Set to 1 to run the pure-Python explorations even where the compiled ones are built.
-PURE_PYTHON_SWITCH = "STRIPS_PURE_PYTHON"
+from strips_framework.compiled import compiled_module as shared_compiled_module
 
 
 class Explorer(Protocol):
@@ -37,21 +34,9 @@ class Explorer(Protocol):
 
 
 def compiled_module(compiled: bool | None = None) -> ModuleType | None:
-    """The compiled module when it is built (and ``compiled`` is not False, nor the
-    environment switch set), else ``None``; ``compiled=True`` insists on it
-    (ImportError when it is not built)."""
-    if compiled is None:
-        compiled = not os.environ.get(PURE_PYTHON_SWITCH)
-        if compiled:
-            try:
-                from strips_evaluators.heuristics import _explore
-            except ImportError:
-                return None
-    if not compiled:
-        return None
-    from strips_evaluators.heuristics import _explore
-
-    return _explore
+    """The compiled module when it is built (see
+    :func:`strips_framework.compiled.compiled_module` for ``compiled``), else ``None``."""
+    return shared_compiled_module("strips_evaluators.heuristics._explore", compiled)
 
 
 def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
@@ -115,13 +100,15 @@ def additive_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[float],
     that have a bucket: most pushes are a list append, and the heap only sees each
     distinct cost once. A bucket is a stack, last in first out, as Fast Downward's bucket
     queue is: among facts of equal cost the one reached last goes first (a fact reached
-    at the cost being taken, by a zero-cost operator, comes out next). The order decides
+    at the cost being taken, by a zero-cost operator, comes out next), and the state's
+    facts go in in causal-graph order (:mod:`.causal_order`). The order decides
     which of several equally cheap operators becomes a supporter, and so the relaxed
     plan, the preferred operators and LM-cut's landmarks; following Fast Downward's
     order keeps search behaviour close to its (``docs/heuristics.md``).
     """
     pre_of, add, is_goal = relaxed.pre_of, relaxed.add, relaxed.is_goal
     start, cost = start_exploration(relaxed, state)
+    start.sort(key=relaxed.start_rank.__getitem__)  # causal order: see .causal_order
     supporter = [IN_STATE] * relaxed.num_facts
     accumulator = relaxed.accumulator[:]
     bits = relaxed.count_bits

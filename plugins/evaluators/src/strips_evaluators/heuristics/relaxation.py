@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 
+from strips_evaluators.heuristics.causal_order import causal_order
 from strips_evaluators.heuristics.factoring import factor_shared_pairs
 from strips_framework.grounding.task import GroundTask
 from strips_framework.records import Record
@@ -64,6 +65,9 @@ class RelaxedTask(Record):
     #: ``count_bits`` bits. One add per reached precondition updates both.
     accumulator: list[int]
     count_bits: int
+    #: Per fact, its place in the order hadd's exploration pushes a state's facts in:
+    #: causal-graph order (:mod:`.causal_order`), the always-true fact last.
+    start_rank: list[int]
 
     __slots__ = (
         "num_facts",
@@ -82,6 +86,7 @@ class RelaxedTask(Record):
         "unit_cost",
         "accumulator",
         "count_bits",
+        "start_rank",
     )
 
     def __init__(
@@ -102,6 +107,7 @@ class RelaxedTask(Record):
         unit_cost: bool,
         accumulator: list[int],
         count_bits: int,
+        start_rank: list[int],
     ) -> None:
         self.num_facts = num_facts
         self.pre = pre
@@ -119,6 +125,7 @@ class RelaxedTask(Record):
         self.unit_cost = unit_cost
         self.accumulator = accumulator
         self.count_bits = count_bits
+        self.start_rank = start_rank
 
 
 def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> RelaxedTask:
@@ -177,6 +184,9 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
     is_goal = [False] * num_facts
     for fact in goal:
         is_goal[fact] = True
+    start_rank = list(range(num_facts))
+    for rank, fact in enumerate(causal_order(task)):
+        start_rank[fact] = rank
     return RelaxedTask(
         num_facts=num_facts,
         pre=pre,
@@ -194,6 +204,7 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
         unit_cost=all(c == 1 for c, o in zip(cost, operator) if o >= 0),
         accumulator=[c << count_bits | n for c, n in zip(cost, pre_count)],
         count_bits=count_bits,
+        start_rank=start_rank,
     )
 
 

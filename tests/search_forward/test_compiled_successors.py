@@ -1,0 +1,115 @@
+"""The compiled successor generator (``forward/_successors.pyx``) against the pure-Python
+reference: the same applicable operators, in the same order, on every state of a
+breadth-first walk, and the same expansions and plans when a search runs on it.
+
+The order matters as much as the set: lazy search puts successors into its open list in
+generation order, so a different order is a different search. The compiled module is
+built by ``pip install``; a missing build fails here rather than passing unnoticed.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from shared_bench import shared_bench
+
+from strips_framework.compiled import PURE_PYTHON_SWITCH
+from strips_framework.forward.breadth_first import BreadthFirstSearch
+from strips_framework.forward.components import StateEstimator
+from strips_framework.forward.successors import SuccessorGenerator, successor_generator
+from strips_framework.grounding import ground
+from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.grounding.task import GroundTask
+from strips_framework.limits import Limits
+from strips_framework.pddl import find_domain, load_task
+
+DATA = Path(__file__).resolve().parents[1] / "pddl" / "data"
+LOCAL = [
+    ("briefcase-domain.pddl", "briefcase-2.pddl"),  # conditional effects
+    ("elevator-domain.pddl", "elevator-1.pddl"),
+    ("switches-domain.pddl", "switches-1.pddl"),  # negative preconditions
+    ("rooms-domain.pddl", "rooms-2.pddl"),
+    ("crates-domain.pddl", "crates-3.pddl"),
+    ("lamps-domain.pddl", "lamps-1.pddl"),
+    ("blocks-domain.pddl", "blocks-3.pddl"),
+]
+IPC = shared_bench("ipc")
+IPC_DOMAINS = sorted(p.name for p in IPC.iterdir() if p.is_dir()) if IPC else []
+STATES = 400
+
+
+def walk(task: GroundTask) -> list[int]:
+    """Up to :data:`STATES` states, breadth-first, applying operators the plain way."""
+    derive = AxiomEvaluator(task).evaluate
+    states, seen = [task.init], {task.init}
+    for state in states:
+        for op in task.operators:
+            if op.applicable(state) and len(states) < STATES:
+                child = derive(op.apply(state))
+                if child not in seen:
+                    seen.add(child)
+                    states.append(child)
+    return states
+
+
+def assert_same_successors(task: GroundTask) -> None:
+    reference = successor_generator(task, compiled=False)
+    compiled = successor_generator(task, compiled=True)
+    assert type(reference) is SuccessorGenerator and type(compiled) is not SuccessorGenerator
+    for state in walk(task):
+        expected = [i for i, op in enumerate(task.operators) if op.applicable(state)]
+        found = compiled.applicable(state)
+        assert found == reference.applicable(state), task.facts_of(state)
+        assert sorted(found) == expected
+
+
+def test_the_compiled_module_is_built(tasks):
+    generator = successor_generator(tasks["gripper-3"])
+    assert type(generator).__module__ == "strips_framework.forward._successors"
+
+
+def test_the_switch_picks_the_reference(tasks, monkeypatch):
+    monkeypatch.setenv(PURE_PYTHON_SWITCH, "1")
+    assert type(successor_generator(tasks["gripper-3"])) is SuccessorGenerator
+
+
+def test_hand_written_tasks_generate_alike(tasks):
+    for name in ("gripper-1", "gripper-3"):
+        assert_same_successors(tasks[name])
+    b = tasks.builder()  # no positive preconditions: tested in every state
+    b.op("(start)", [], ["running"], pre_neg=["running"])
+    b.op("(stop)", ["running"], [], ["running"])
+    assert_same_successors(b.task("switch", [], ["running"]))
+
+
+@pytest.mark.parametrize(("domain", "problem"), LOCAL)
+def test_local_tasks_generate_alike(domain, problem):
+    assert_same_successors(ground(load_task(DATA / domain, DATA / problem)))
+
+
+@pytest.mark.parametrize("domain", IPC_DOMAINS)
+def test_ipc_first_tasks_generate_alike(domain):
+    problem = IPC / domain / "task01.pddl"
+    assert_same_successors(ground(load_task(find_domain(problem), problem)))
+
+
+class _Blind(StateEstimator):
+    def estimate(self, state: int) -> float:
+        return 0
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, list[int]]:
+        return 0, []
+
+
+@pytest.mark.parametrize(("domain", "problem"), LOCAL)
+def test_searches_expand_alike(monkeypatch, domain, problem):
+    """Breadth-first search, whose expansions follow generation order only."""
+    task = ground(load_task(DATA / domain, DATA / problem))
+    results = []
+    for pure in ("", "1"):
+        monkeypatch.setenv(PURE_PYTHON_SWITCH, pure)
+        results.append(BreadthFirstSearch().search_task(task, _Blind(), Limits(time=60)))
+    compiled, python = results
+    assert (compiled.status, compiled.plan) == (python.status, python.plan)
+    assert compiled.statistics.expanded == python.statistics.expanded
