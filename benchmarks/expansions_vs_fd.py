@@ -23,6 +23,7 @@ import argparse
 import math
 import os
 import re
+import signal
 import subprocess
 import sys
 import tempfile
@@ -46,13 +47,19 @@ FD = (r"Expanded (\d+) state", r"Search time: ([\d.]+)s", "Solution found")
 def _run(command: Sequence[str], patterns: tuple[str, str, str], timeout: float,
          cwd: str) -> tuple[int, float] | None:
     """The expansion count and search seconds a solving run prints; ``None`` when it
-    found no plan in time."""
-    try:
-        done = subprocess.run(command, capture_output=True, text=True, timeout=timeout, cwd=cwd)
-    except subprocess.TimeoutExpired:
-        return None
-    expanded, seconds = (re.search(pattern, done.stdout) for pattern in patterns[:2])
-    if not (expanded and seconds and patterns[2] in done.stdout):
+    found no plan in time. The run gets a process group of its own, killed whole at the
+    timeout: Fast Downward's driver runs the search in a child process, which would
+    otherwise outlive it and take a core from every run after it."""
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                          text=True, cwd=cwd, start_new_session=True) as process:
+        try:
+            stdout, _ = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.communicate()
+            return None
+    expanded, seconds = (re.search(pattern, stdout) for pattern in patterns[:2])
+    if not (expanded and seconds and patterns[2] in stdout):
         return None
     return int(expanded.group(1)), float(seconds.group(1))
 
