@@ -81,7 +81,7 @@ from strips_resolution_prover.pclause import (
     renumber,
     term_depth,
 )
-from strips_resolution_prover.selection import ClauseQueue
+from strips_resolution_prover.selection import ClauseQueue, unit_preference
 from strips_resolution_prover.subsumption import MatchWork, SubsumptionIndex
 
 #: The values of ``goal_selection`` (see :class:`ResolutionProver`).
@@ -96,7 +96,8 @@ class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
     Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
-    is the weight-queue penalty per literal beyond the first (0: none); ``set_of_support``
+    is the weight-queue penalty per literal beyond the first (0: none; ``None``: 4 on tasks
+    with axioms, 0 without, :func:`~.selection.unit_preference`); ``set_of_support``
     false lets axioms be resolved with each other too (goal descendants are still preferred),
     which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
@@ -120,7 +121,7 @@ class ResolutionProver:
     )
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
-    unit_preference: int = field(default=4, validator=[instance_of(int), ge(0)])
+    unit_preference: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
     set_of_support: bool = field(default=True, validator=instance_of(bool))
     max_weight: int | None = field(default=120, validator=optional([instance_of(int), ge(1)]))
     max_clause_literals: int | None = field(
@@ -449,7 +450,6 @@ class _Saturation:
         #: What goal literals' partners offer (:func:`.inference.fewest_partners`).
         self.offers: Offers = {}
         self.own = _Retained(len(axioms.clauses))
-        self.queue = ClauseQueue(options.pick_given_ratio, options.unit_preference)
         self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
         self.answers: list[Answer] = []
         self.max_answers = 1
@@ -459,6 +459,9 @@ class _Saturation:
         # Literal selection needs every clause to be resolved with every other: it is
         # incomplete with a set of support, whose usable clauses never meet each other.
         self.selecting = not options.set_of_support or not has_axioms
+        self.queue = ClauseQueue(
+            options.pick_given_ratio, unit_preference(options.unit_preference, has_axioms)
+        )
         self.has_axioms = has_axioms
         self.uses_equality = axioms.uses_equality or mentions_equality(
             chain(extra, negated_goal)
