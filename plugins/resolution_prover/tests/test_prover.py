@@ -11,6 +11,7 @@ from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Proo
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover import ResolutionProver
 from strips_resolution_prover.auto import plan
+from strips_resolution_prover.prover import _attempt
 
 M, N = Param("m"), Param("n")
 
@@ -301,3 +302,28 @@ def test_a_set_of_support_without_answers_leaves_the_question_to_saturation() ->
     assert prove(axioms, goal).status == SATURATED  # the set of support alone
     result = ResolutionProver().prove(ProofTask(axioms, goal, effort=100))
     assert result.answers == (((M, ("f", "a")),),)
+
+
+def _first_given(axioms: list[Clause], goal: list[Clause], **options: object) -> Clause:
+    prover = ResolutionProver(schedule=False, set_of_support=False, **options)
+    attempt = _attempt(prover, ProofTask(axioms, goal))
+    attempt.start(1)
+    given = attempt.queue.pop()
+    assert given is not None
+    return given.to_clause()
+
+
+def test_unit_preference_only_where_there_are_axioms() -> None:
+    # A light long clause (weight 9) and a heavy unit (weight 10): symbols only without
+    # axioms (all negated conjecture: the long clauses are the lemmas, GRP012+5), the
+    # penalty 4 per extra literal with them (17 against 10: short goal clauses first).
+    X = 0
+    light_long = Clause([neg("p", X), neg("q", X), pos("r", X)])
+    heavy_unit = Clause([pos("s", ("f", ("f", ("f", "a"))))])
+    goal = [heavy_unit, light_long]
+    assert _first_given([], goal).literals == light_long.literals
+    # The axiom is heavy enough (14, doubled as no goal descendant) not to come first.
+    axiom = clauses([pos("t", ("f", ("f", ("f", ("f", ("f", "b"))))))])
+    assert _first_given(axiom, goal).literals == heavy_unit.literals
+    # An explicit option is what it says.
+    assert _first_given([], goal, unit_preference=4).literals == heavy_unit.literals

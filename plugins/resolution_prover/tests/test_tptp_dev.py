@@ -109,6 +109,20 @@ def test_question_answers_are_correct(path: Path, config: str) -> None:
     assert prover.prove(check).proved
 
 
+#: Floors beyond ``EFFORT`` for the automatic mode, with the given clauses each needs
+#: (about 1,220 and 690): GRP012+5 (no axioms: symbols only, no unit preference, where
+#: the penalty took 2,656) and SET018+4 (saturation of the SInE-relevant axioms).
+LATE = {"GRP012+5": 1500, "SET018+4": 1000}
+
+
+@needs_bench
+@pytest.mark.parametrize("name", sorted(LATE))
+def test_late_floors(name: str) -> None:
+    problem = load_tptp(BENCH / "dev" / f"{name}.p")
+    result = ResolutionProver().prove(problem.task(LATE[name]))
+    assert szs_status(problem, result) == _expected()[name]
+
+
 #: What a TPTP user gets for each question (``prove_tptp``): the conjecture's status, the
 #: original problem's read as a conjecture's.
 _AS_CONJECTURE = {"Unsatisfiable": "Theorem", "Theorem": "Theorem",

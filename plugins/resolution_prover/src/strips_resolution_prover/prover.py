@@ -45,6 +45,7 @@ from strips_framework.worldmodel.proving import (
 )
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_resolution_prover.auto import (
+    PRUNED_SHARE,
     SATURATION_SHARE,
     definite_facts,
     is_world_model,
@@ -81,7 +82,8 @@ from strips_resolution_prover.pclause import (
     renumber,
     term_depth,
 )
-from strips_resolution_prover.selection import ClauseQueue
+from strips_resolution_prover.relevance import relevant_axioms
+from strips_resolution_prover.selection import ClauseQueue, unit_preference
 from strips_resolution_prover.subsumption import MatchWork, SubsumptionIndex
 
 #: The values of ``goal_selection`` (see :class:`ResolutionProver`).
@@ -96,7 +98,8 @@ class ResolutionProver:
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
     Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
-    is the weight-queue penalty per literal beyond the first (0: none); ``set_of_support``
+    is the weight-queue penalty per literal beyond the first (0: none; ``None``: 4 on tasks
+    with axioms, 0 without, :func:`~.selection.unit_preference`); ``set_of_support``
     false lets axioms be resolved with each other too (goal descendants are still preferred),
     which finds answers that need derived ground facts; ``max_weight`` (symbols, variables 1 and others 2),
     ``max_clause_literals`` and ``max_term_depth`` discard larger conclusions (``None``: no
@@ -120,7 +123,7 @@ class ResolutionProver:
     )
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
-    unit_preference: int = field(default=4, validator=[instance_of(int), ge(0)])
+    unit_preference: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
     set_of_support: bool = field(default=True, validator=instance_of(bool))
     max_weight: int | None = field(default=120, validator=optional([instance_of(int), ge(1)]))
     max_clause_literals: int | None = field(
@@ -374,32 +377,48 @@ def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResul
     chosen = plan(task.axioms, task.negated_goal)
     if chosen == "set-of-support":
         return sos.prove(task)
-    if chosen == "saturation" or task.effort < 2:
+    if chosen == "saturation" or task.effort < 3:
         return saturate.prove(task)
-    return interleave(task, saturate, sos)
+    relevant = relevant_axioms(task.axioms, task.negated_goal)
+    pruned = evolve(task, axioms=relevant) if len(relevant) < len(task.axioms) else None
+    return interleave(task, saturate, sos, pruned)
 
 
-def interleave(task: ProofTask, saturate: ResolutionProver, sos: ResolutionProver) -> ProofResult:
+def interleave(
+    task: ProofTask,
+    saturate: ResolutionProver,
+    sos: ResolutionProver,
+    pruned: ProofTask | None = None,
+) -> ProofResult:
     """Saturation and the set of support on ``task`` side by side, as if run in parallel
-    with :data:`~.auto.SATURATION_SHARE` of the effort for saturation (see :mod:`.auto`).
+    with :data:`~.auto.SATURATION_SHARE` of the effort for saturation (see :mod:`.auto`);
+    with ``pruned`` (the task on its relevant axioms, :mod:`.relevance`), saturation of
+    that too, on :data:`~.auto.PRUNED_SHARE` of the effort, taken from the other two.
 
     Each attempt keeps its state, so interleaving loses no work: in round ``r`` of
     ``task.effort`` rounds each has had ``r / task.effort`` of its share. The first that
     decides answers, except that the set of support running out of clauses for a goal
-    with parameters only says it found no answer: saturation, which derives the ground
-    instances a parameter may take (III.A), then goes on with the rest of the effort.
-    One that gives up hands the effort it did not use to the other; if neither decides,
-    the set of support's result (its uncompleted proof is the difference) stands. The
-    effort used is the sum, so the run is as deterministic as each part.
+    with parameters only says it found no answer (saturation, which derives the ground
+    instances a parameter may take (III.A), then goes on with the rest of the effort),
+    and that the pruned run saturating says nothing about the whole task. One that
+    stops without deciding hands the effort it did not use to the others; if none
+    decides, the set of support's result (its uncompleted proof is the difference)
+    stands. The effort used is the sum, so the run is as deterministic as each part.
     """
     effort = task.effort
-    share = max(1, min(effort - 1, int(effort * SATURATION_SHARE)))
-    attempts = [_attempt(saturate, task), _attempt(sos, task)]
-    bounds = [share, effort - share]
     asks = any(has_parameter(atom) for c in task.negated_goal for _, atom in c.literals)
+    attempts = [_attempt(saturate, task), _attempt(sos, task)]
+    claims = [True, not asks]
+    rest = effort
+    if pruned is not None:
+        attempts.append(_attempt(saturate, pruned))
+        claims.append(False)
+        rest = effort - max(1, int(effort * PRUNED_SHARE))
+    share = max(1, min(rest - 1, int(rest * SATURATION_SHARE)))
+    bounds = [share, rest - share] + [effort - rest] * (pruned is not None)
     for attempt in attempts:
         attempt.start(task.max_answers)
-    live = [0, 1]
+    live = list(range(len(attempts)))
     for round_ in range(1, effort + 1):
         for i in tuple(live):
             attempt = attempts[i]
@@ -407,14 +426,28 @@ def interleave(task: ProofTask, saturate: ResolutionProver, sos: ResolutionProve
             if not attempt.advance(target) and attempt.effort < bounds[i]:
                 continue
             result = attempt.result()
-            if result.status == PROVED or (result.status == SATURATED and not (i and asks)):
+            if result.status == PROVED or (result.status == SATURATED and claims[i]):
                 return evolve(result, effort_used=sum(a.effort for a in attempts))
             live.remove(i)
-            for other in live:
-                bounds[other] = effort - attempt.effort
+            _hand_on(bounds[i] - attempt.effort, live, bounds)
+            bounds[i] = attempt.effort
         if not live:
             break
     return evolve(attempts[1].result(), effort_used=sum(a.effort for a in attempts))
+
+
+def _hand_on(unused: int, live: Sequence[int], bounds: list[int]) -> None:
+    """Share the effort an attempt did not use among the ``live`` ones, in proportion to
+    their bounds (the remainder to the first), so the bounds still sum to the effort."""
+    if not live or unused <= 0:
+        return
+    total = sum(bounds[i] for i in live)
+    given = 0
+    for i in live:
+        extra = unused * bounds[i] // total if total else 0
+        bounds[i] += extra
+        given += extra
+    bounds[live[0]] += unused - given
 
 
 class _Saturation:
@@ -449,7 +482,6 @@ class _Saturation:
         #: What goal literals' partners offer (:func:`.inference.fewest_partners`).
         self.offers: Offers = {}
         self.own = _Retained(len(axioms.clauses))
-        self.queue = ClauseQueue(options.pick_given_ratio, options.unit_preference)
         self.seen: set[tuple[tuple[Literal, ...], tuple]] = set()
         self.answers: list[Answer] = []
         self.max_answers = 1
@@ -459,6 +491,9 @@ class _Saturation:
         # Literal selection needs every clause to be resolved with every other: it is
         # incomplete with a set of support, whose usable clauses never meet each other.
         self.selecting = not options.set_of_support or not has_axioms
+        self.queue = ClauseQueue(
+            options.pick_given_ratio, unit_preference(options.unit_preference, has_axioms)
+        )
         self.has_axioms = has_axioms
         self.uses_equality = axioms.uses_equality or mentions_equality(
             chain(extra, negated_goal)

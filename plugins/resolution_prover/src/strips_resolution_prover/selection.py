@@ -4,7 +4,8 @@ The weight queue finds short proofs fast; the age queue makes the search fair (e
 is eventually picked, so saturation means what it says). Unit preference adds a penalty to
 the weight of every literal beyond the first, so short clauses go first, which on Horn world
 models makes the search behave like backward chaining. (A strict units-first order starves
-the longer clauses a proof needs; on the TPTP dev set the penalty 4 did best.) Ties break on clause id, i.e. derivation order, so the
+the longer clauses a proof needs; on the TPTP dev set the penalty 4 did best on tasks with
+axioms, none on tasks without: see :func:`unit_preference`.) Ties break on clause id, i.e. derivation order, so the
 search never depends on hashing.
 """
 
@@ -15,9 +16,32 @@ from collections import deque
 
 from strips_resolution_prover.pclause import PClause
 
+#: The default penalty per literal beyond the first on tasks with axioms (the TPTP dev
+#: set's best).
+SOS_UNIT_PREFERENCE = 4
+
 #: Without a set of support, clauses not descended from the negated goal wait longer in the
 #: weight queue (factor 2 beat 1 on the TPTP dev set).
 NON_GOAL_FACTOR = 2
+
+
+def unit_preference(configured: int | None, has_axioms: bool) -> int:
+    """The penalty per literal beyond the first: the configured one, else by the task.
+
+    With axioms the penalty keeps the search near the goal: under a set of support goal
+    clauses shrink to the empty clause one resolved literal at a time, and preferring
+    short ones is backward chaining. A task without axioms (all of it negated conjecture,
+    as a FOF theorem stated in one formula) is saturated with literal selection, where a
+    clause resolves on one selected literal whatever its length and the long clauses are
+    the lemmas a proof needs (the conditional forms of associativity in GRP012+5, picked
+    too late with the penalty); there we weigh symbols only, as PyRes and E do. (Symbols
+    only on every saturation also sped up SYN581-1 and SET830-2, but the proof of
+    SYN074+1.q then took 101 given clauses instead of 63, and its answer search, a
+    multiple of that, ran past 10 s.)
+    """
+    if configured is not None:
+        return configured
+    return SOS_UNIT_PREFERENCE if has_axioms else 0
 
 
 class ClauseQueue:
