@@ -232,6 +232,34 @@ def test_without_set_of_support_axioms_resolve_with_each_other() -> None:
     ]
 
 
+def test_ordered_resolution_saturates_where_selection_alone_does_not() -> None:
+    # P(f(x)) | Q(x) has no negative literal to select; resolved on Q(x) with the selected
+    # ~Q(y) of ~Q(y) | Q(f(y)) it would breed P(f(x)) | Q(f(x)), P(f(x)) | Q(f(f(x))), ...
+    # forever. Under KBO, Q(x) is below P(f(x)) in every instance, so only P(f(x)) is
+    # resolved on; nothing resolves with it, and the search saturates (all P true is a model).
+    goal = clauses([pos("P", ("f", 0)), pos("Q", 0)], [neg("Q", 1), pos("Q", ("f", 1))])
+    assert prove([], goal, effort=200).status == SATURATED
+    # The same clauses with ~P(f(a)) and Q(a): refuted, so the restriction keeps what a
+    # proof needs (P(f(a)) | Q(a) resolves on its maximal literal P(f(a))).
+    refutable = [*goal, *clauses([neg("P", ("f", "a"))], [neg("Q", "a")])]
+    assert prove([], refutable).proved
+
+
+def test_an_answer_search_keeps_every_literal_of_a_positive_clause() -> None:
+    # SYN031-1's question: the answer needs g(x, a) of g(x, a) | g(f(x), x), which KBO puts
+    # below g(f(x), x). A parameter is bound once per derivation (III.A), not ordered, so
+    # with parameters in the goal the saturation resolves on every positive literal.
+    axioms = clauses(
+        [pos("g", 0, "a"), pos("g", ("f", 0), 0)],
+        [pos("g", 0, "a"), pos("g", 0, ("f", 0))],
+        [neg("g", 0, 1), pos("g", ("f", 1), 1)],
+        [neg("g", 0, 1), pos("g", 1, ("f", 1))],
+    )
+    goal = clauses([neg("g", M, N), neg("g", N, "a")])
+    prover = ResolutionProver(schedule=False, set_of_support=False)
+    assert prover.prove(ProofTask(axioms, goal)).proved
+
+
 def test_literal_selection_saturates_without_usable_clauses() -> None:
     # With every clause in the queue, ~P(x) | P(f(x)) resolved with itself would breed
     # P(f(f(x))), P(f(f(f(x)))), ... forever; resolving only on its selected negative

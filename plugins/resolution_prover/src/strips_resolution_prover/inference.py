@@ -14,8 +14,17 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
-from strips_framework.logic.terms import Param, Term, is_ground, params_of, subterms, variables_of
+from strips_framework.logic.terms import (
+    EQUALITY,
+    Param,
+    Term,
+    is_ground,
+    params_of,
+    subterms,
+    variables_of,
+)
 from strips_framework.logic.unify import Substitution, substitute, unify
+from strips_resolution_prover.kbo import greater
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
 #: Offset added to the given clause's variables; processed clauses number theirs from 0, and
@@ -131,14 +140,20 @@ def _clash(atom: tuple, other: tuple) -> bool:
     return False
 
 
-def eligible(literals: tuple[Literal, ...], selecting: bool) -> tuple[int, ...]:
+def eligible(
+    literals: tuple[Literal, ...], selecting: bool, ordered: bool = False
+) -> tuple[int, ...]:
     """The positions of the literals that may be resolved upon.
 
     Without literal selection, all of them. With it (resolution without a set of support,
     as in PyRes and E), a clause with negative literals resolves only on one of them, the
-    heaviest (first on ties); a clause without any resolves on all of its literals. So two
-    clauses only resolve when one of them is positive, which keeps saturation of
-    satisfiable problems finite far more often and remains refutationally complete.
+    heaviest (first on ties); a clause without any resolves on all of its literals, or
+    with ``ordered`` on those not below another under the Knuth-Bendix ordering (ordered
+    resolution, :func:`_maximal`). So two clauses only resolve when one of them is
+    positive, and an ordered positive clause only on what may be its largest literal,
+    which keeps saturation of satisfiable problems
+    finite far more often and remains refutationally complete (Bachmair and Ganzinger's
+    resolution with selection and ordering).
     """
     if selecting:
         best = -1
@@ -147,7 +162,27 @@ def eligible(literals: tuple[Literal, ...], selecting: bool) -> tuple[int, ...]:
                 best = i
         if best >= 0:
             return (best,)
+        if ordered:
+            return _maximal(literals)
     return tuple(range(len(literals)))
+
+
+def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
+    """The positions of the literals no other literal of the clause is above in KBO (on
+    atoms, predicates as head symbols). KBO on terms with variables holds under every
+    substitution, so a literal left out is below another in every instance too: it could
+    never be the maximal literal an ordered inference needs. Clauses with equations keep
+    all their literals: superposition compares equations as multisets of their sides."""
+    if len(literals) < 2:
+        return tuple(range(len(literals)))
+    atoms = [atom for _, atom in literals]
+    if any(atom[0] == EQUALITY for atom in atoms):
+        return tuple(range(len(literals)))
+    return tuple(
+        i
+        for i, atom in enumerate(atoms)
+        if not any(j != i and greater(other, atom) for j, other in enumerate(atoms))
+    )
 
 
 #: The retained literals a literal may resolve with: ``(clause, position)`` pairs of the

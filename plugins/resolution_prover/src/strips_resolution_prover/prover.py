@@ -212,15 +212,18 @@ class _Retained:
         clause.id = self.first_id + len(self.clauses)
         self.clauses.append(clause)
 
-    def retain(self, clause: PClause, selecting: bool, deletable: bool) -> bool:
-        """Index ``clause``; whether it is a new demodulator."""
+    def retain(
+        self, clause: PClause, selecting: bool, deletable: bool, ordered: bool = False
+    ) -> bool:
+        """Index ``clause`` (on the literals :func:`.inference.eligible` allows); whether
+        it is a new demodulator."""
         self.processed.append(clause)
         rule = False
         if any(pos and is_equality(atom) for pos, atom in clause.literals):
             self.equational.append(clause)
             rule = self.demodulators.add(clause)
         self.subsumption.add(clause, deletable=deletable)
-        for i in eligible(clause.literals, selecting):
+        for i in eligible(clause.literals, selecting, ordered):
             self.index.add(clause, i)
         return rule
 
@@ -491,6 +494,12 @@ class _Saturation:
         # Literal selection needs every clause to be resolved with every other: it is
         # incomplete with a set of support, whose usable clauses never meet each other.
         self.selecting = not options.set_of_support or not has_axioms
+        # Ordered resolution too, unless the goal has parameters: an answer search binds
+        # each parameter once per derivation (paper, III.A), a restriction of the
+        # calculus under which leaving out non-maximal literals would lose answers.
+        self.ordered = self.selecting and not any(
+            has_parameter(atom) for clause in negated_goal for _, atom in clause.literals
+        )
         self.queue = ClauseQueue(
             options.pick_given_ratio, unit_preference(options.unit_preference, has_axioms)
         )
@@ -601,7 +610,7 @@ class _Saturation:
                 given, renamed, self._partners, shared, self.rigid, self.offers
             )
         else:
-            selected = eligible(given.literals, self.selecting)
+            selected = eligible(given.literals, self.selecting, self.ordered)
         for clause in resolvents(given, renamed, selected, self._partners, self.limits):
             self._add_new(clause)
             if self._done():
@@ -742,7 +751,7 @@ class _Saturation:
     def _retain(self, clause: PClause) -> bool:
         """Make ``clause`` a partner for later given clauses; whether it is a new
         demodulator."""
-        return self.own.retain(clause, self.selecting, self._deletable(clause))
+        return self.own.retain(clause, self.selecting, self._deletable(clause), self.ordered)
 
     def _rewrite_retained(self, rule: PClause) -> None:
         """Backward demodulation: each retained clause that the new unit equation ``rule``
