@@ -29,7 +29,7 @@ So, from the features of the task (:func:`plan`):
   given clauses, where saturation needs thousands at 4 ms each) is then found after
   about 170 given clauses instead of after saturation's whole share. The first that
   decides answers; if neither does, the goal-directed run's uncompleted proof is the
-  difference. When SInE (:mod:`.relevance`) leaves axioms out, a third run saturates the
+  difference. When SInE (:mod:`.axiom_relevance`) leaves axioms out, a third run saturates the
   relevant ones alone on :data:`PRUNED_SHARE` of the effort (SET018+4: 11 of 29
   clauses, proved where the whole set is not within 3,000 given clauses); only its
   refutations count, since a subset that saturates says nothing about the whole.
@@ -50,7 +50,7 @@ from strips_framework.logic.terms import EQUALITY
 SATURATION_SHARE = 2 / 3
 
 #: The share of the effort that saturation of the relevant axioms alone gets, when
-#: SInE leaves some out (:mod:`.relevance`); the other two share the rest as above.
+#: SInE leaves some out (:mod:`.axiom_relevance`); the other two share the rest as above.
 PRUNED_SHARE = 1 / 5
 
 Plan = Literal["saturation", "set-of-support", "schedule"]

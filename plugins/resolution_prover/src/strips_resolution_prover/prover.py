@@ -82,7 +82,7 @@ from strips_resolution_prover.pclause import (
     renumber,
     term_depth,
 )
-from strips_resolution_prover.relevance import relevant_axioms
+from strips_resolution_prover.axiom_relevance import relevant_axioms
 from strips_resolution_prover.selection import ClauseQueue, unit_preference
 from strips_resolution_prover.subsumption import MatchWork, SubsumptionIndex
 
@@ -395,7 +395,7 @@ def interleave(
 ) -> ProofResult:
     """Saturation and the set of support on ``task`` side by side, as if run in parallel
     with :data:`~.auto.SATURATION_SHARE` of the effort for saturation (see :mod:`.auto`);
-    with ``pruned`` (the task on its relevant axioms, :mod:`.relevance`), saturation of
+    with ``pruned`` (the task on its relevant axioms, :mod:`.axiom_relevance`), saturation of
     that too, on :data:`~.auto.PRUNED_SHARE` of the effort, taken from the other two.
 
     Each attempt keeps its state, so interleaving loses no work: in round ``r`` of

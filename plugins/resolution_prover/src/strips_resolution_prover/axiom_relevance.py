@@ -25,8 +25,8 @@ from collections.abc import Iterator, Sequence
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Term
 
-#: An axiom is triggered by a symbol that occurs in at most this many times as many
-#: axioms as its rarest symbol (SInE's tolerance; 1: only by its rarest symbols).
+#: A symbol triggers an axiom when it occurs in at most this many times as many axioms
+#: as the axiom's rarest symbol does (SInE's tolerance; 1: only its rarest symbols).
 TOLERANCE = 1.0
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from strips_framework.logic.clauses import Clause
 from strips_framework.worldmodel.proving import PROVED, ProofTask
 from strips_resolution_prover import ResolutionProver
-from strips_resolution_prover.relevance import relevant_axioms
+from strips_resolution_prover.axiom_relevance import relevant_axioms
 
 X = 0
 
