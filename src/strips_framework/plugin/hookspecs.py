@@ -22,6 +22,7 @@ import pluggy
 if TYPE_CHECKING:
     from strips_framework.formats import ProblemLoader
     from strips_framework.forward.components import GroundTaskStrategy, StateHeuristic
+    from strips_framework.lifted.components import LiftedHeuristic
     from strips_framework.macrops.learning import MacroLearner
     from strips_framework.means_ends.components import (
         DifferenceExtractor,
@@ -116,6 +117,17 @@ def strips_register_heuristics() -> list[type[StateHeuristic]]:
     called once per task and does the precomputation; the estimator it returns is called
     for every state. A heuristic that never overestimates sets ``admissible = True``; one
     that also proposes *preferred operators* implements ``estimate_with_preferred``.
+    """
+
+
+@hookspec
+def strips_register_lifted_heuristics() -> list[type[LiftedHeuristic]]:
+    """Return lifted-heuristic classes.
+
+    A lifted heuristic estimates, for a state of a PDDL task that is never grounded (see
+    :mod:`strips_framework.lifted.components`), the cost still needed to reach the goal;
+    lifted strategies use it. ``for_task`` is called once per task and must not ground
+    the task; the estimator it returns is called for every state.
     """
 
 

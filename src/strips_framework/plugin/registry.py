@@ -42,6 +42,9 @@ KINDS = {
     "relevance": ("strips_register_relevance_filters", "relevance filter", "relevance filters"),
     "evaluator": ("strips_register_evaluators", "evaluator", "evaluators"),
     "heuristic": ("strips_register_heuristics", "state heuristic", "state heuristics"),
+    "lifted-heuristic": (
+        "strips_register_lifted_heuristics", "lifted heuristic", "lifted heuristics"
+    ),
     "loader": ("strips_register_loaders", "problem loader", "problem loaders"),
     "learner": ("strips_register_macro_learners", "macro learner", "macro learners"),
 }
