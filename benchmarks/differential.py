@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import argparse
 import multiprocessing
-import shutil
 import sys
 import time
 from collections import Counter
@@ -38,6 +37,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from strips_eprover_prover import EProver
+from strips_eprover_prover.binary import find_binary
 from strips_z3_prover import Z3Prover
 
 from strips_framework.logic.clauses import Clause, Literal
@@ -117,12 +117,12 @@ def tasks(draw: st.DrawFn) -> ProofTask:
 
 
 def provers(with_e: bool, z3_incremental: bool = False) -> dict[str, TheoremProver]:
-    """The provers compared (E only where Debian's ``eprover`` is installed)."""
+    """The provers compared (E only where an E binary is found)."""
     chosen: dict[str, TheoremProver] = {
         "resolution": ResolutionProver(),
         "z3": Z3Prover(incremental=z3_incremental),
     }
-    if with_e and shutil.which("eprover"):
+    if with_e and find_binary() is not None:
         chosen["e"] = EProver(cpu_limit=E_CPU_LIMIT)
     return chosen
 

