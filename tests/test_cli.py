@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -60,7 +60,7 @@ def test_unknown_plugin_name_in_config(tmp_path, capsys, monkeypatch):
     config.write_text('[prover]\nname = "z3"\n')
     assert main(["solve", str(THREE_BOXES), "--config", str(config)]) == 2
     err = capsys.readouterr().err
-    assert "prover 'z3' is not registered (available: none); is strips-z3-prover installed?" in err
+    assert "prover 'z3' is not registered (available: none); plugin autoload is off" in err
 
 
 def test_plugins_lists_implementations_with_distributions_and_options(capsys):

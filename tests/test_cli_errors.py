@@ -15,7 +15,7 @@ import pytest
 
 from strips_evaluators.heuristics.ff import FFEstimator
 from strips_evaluators.paper import PaperEvaluator
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -49,13 +49,24 @@ def test_installed_plugins_come_from_their_distributions():
     assert registry.get("evaluator", "paper").distribution == "strips-evaluators"
 
 
-def test_unknown_name_lists_the_available_ones_and_the_distribution():
+def test_unknown_name_lists_the_available_ones_and_a_close_name(monkeypatch):
+    monkeypatch.delenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", raising=False)
     registry = Registry(get_plugin_manager(load_entrypoints=False))
     with pytest.raises(PluginError) as error:
         registry.get("prover", "z3")
     assert str(error.value) == (
-        "prover 'z3' is not registered (available: none); is strips-z3-prover installed?"
+        "prover 'z3' is not registered (available: none); is the plugin that provides it "
+        "installed? 'strips plugins' lists them"
     )
+    with pytest.raises(PluginError, match=r"'means-end' .*; did you mean 'means-ends'\?"):
+        registry.get("strategy", "means-end")
+
+
+def test_with_autoload_off_the_message_names_the_plugins_left_unloaded(monkeypatch):
+    monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
+    registry = Registry(get_plugin_manager(load_entrypoints=False))
+    with pytest.raises(PluginError, match=r"plugin autoload is off .*installed: .*strips-resolution-prover"):
+        registry.get("prover", "resolution")
     with pytest.raises(PluginError, match=r"strategy 'dfs' is not registered \(available: means-ends, "):
         registry.get("strategy", "dfs")
 

@@ -36,10 +36,14 @@ class Limits(Configurable):
     memory: int | None
 
 
-class LimitReached(Exception):
+class LimitReached(BaseException):
     """Raised inside a run when a limit ends it (by a search's own checks, or by the
     CLI's process alarm wherever the process is); every strategy catches it and reports
-    the statistics it has."""
+    the statistics it has.
+
+    A :class:`BaseException`, as :class:`KeyboardInterrupt` is: the alarm raises it in
+    whatever code runs at that moment, a plugin's included, and an ``except Exception``
+    there must not turn the end of the run into another error or into nothing."""
 
     def __init__(self, status: Status) -> None:
         super().__init__(status)

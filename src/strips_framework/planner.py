@@ -85,6 +85,11 @@ class Planner(Record):
         """This planner, after building each component it uses, and every one the config
         file names even if this strategy does not use it (a ``[heuristic]`` typo is a typo
         with means-ends too), and checking that the ones used fit together."""
+        config = self.config.with_registered_defaults(self.registry, ("strategy",))
+        tables = [config.table_of(kind) for kind in self._replace(config=config).kinds_used()]
+        config = config.with_registered_defaults(self.registry, tables)
+        if config is not self.config:
+            return self._replace(config=config).checked()
         kinds = list(self.kinds_used())
         for table in sorted(self.config.chosen):
             kind = self.config.strategy_kind(self.registry) if table == "strategy" else table
@@ -109,9 +114,9 @@ class Planner(Record):
 
     def for_pddl(self) -> Planner:
         """The planner for PDDL input: the config's, with the strategy defaulting to
-        lazy greedy search (:data:`~strips_framework.plugin.config.PDDL_DEFAULT_STRATEGY`) unless
+        lazy greedy search (:data:`~strips_framework.plugin.config.PDDL_DEFAULT_STRATEGIES`) unless
         the config chose one, as ``strips solve`` does."""
-        config = self.config.for_pddl()
+        config = self.config.for_pddl(self.registry)
         if config is self.config:
             return self
         return Planner(self.registry, config, self.progress).checked()
@@ -183,7 +188,7 @@ class Planner(Record):
             from strips_framework.pddl import to_problem
 
             macrops = _read_library(library, to_problem(pddl))
-            result = solve_with_macros(self, task, macrops, clock)
+            result = solve_with_macros(self.solve_task, task, macrops, clock)
         statistics = result.statistics._replace(
             parse_seconds=parse_seconds,
             ground_seconds=searching_since - grounding_since,

@@ -11,12 +11,9 @@ over ground tasks) count different things, so each keeps its own statistics reco
 from __future__ import annotations
 
 import enum
-from typing import TYPE_CHECKING, ClassVar, Protocol
+from typing import ClassVar, Protocol
 
 from strips_framework.records import Record
-
-if TYPE_CHECKING:
-    from strips_framework.means_ends.result import Tree
 
 
 class Status(enum.StrEnum):
@@ -76,7 +73,8 @@ class Result(Record):
     ``cost`` is the plan's total cost (its length on a unit-cost task); ``seconds`` the
     wall-clock time since the planner's clock started (reading and grounding included when
     the planner read the input). ``tree`` is the search tree of a world-model search (for
-    ``--tree`` and the evaluators' tests), ``None`` for forward search.
+    ``--tree`` and the evaluators' tests; a :class:`strips_framework.means_ends.result.Tree`,
+    which this bottom layer does not name), ``None`` for forward search.
     """
 
     status: Status
@@ -85,7 +83,7 @@ class Result(Record):
     statistics: FamilyStatistics
     seconds: float
     uses_costs: bool
-    tree: Tree | None
+    tree: object | None
 
     __slots__ = ("status", "plan", "cost", "statistics", "seconds", "uses_costs", "tree")
 
@@ -97,7 +95,7 @@ class Result(Record):
         statistics: FamilyStatistics,
         seconds: float = 0.0,
         uses_costs: bool = False,
-        tree: Tree | None = None,
+        tree: object | None = None,
     ) -> None:
         self.status = status
         self.plan = plan

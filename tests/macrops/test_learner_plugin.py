@@ -7,7 +7,7 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_framework.macrops.learning import learn_sequence
+from strips_framework.learning import learn_sequence
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import TriangleTable
 from strips_framework.planner import Planner

@@ -8,7 +8,8 @@ from pathlib import Path
 
 from strips_framework.grounding import ground
 from strips_framework.macrops.forward import expand, with_macros
-from strips_framework.macrops.learning import TriangleTableLearner, learn_sequence
+from strips_framework.learning import learn_sequence
+from strips_framework.macrops.learning import TriangleTableLearner
 from strips_framework.macrops.library_file import library_text, read_library
 from strips_framework.macrops.macrop import Library
 from strips_framework.pddl import load_task, to_problem

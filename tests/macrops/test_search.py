@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import pytest
 
-from strips_framework.macrops.learning import TriangleTableLearner, learn_sequence
+from strips_framework.learning import learn_sequence
+from strips_framework.macrops.learning import TriangleTableLearner
 from strips_framework.macrops.macrop import Library
 from strips_framework.planner import Planner
 from strips_framework.worldmodel.simulate import replay

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.errors import ConfigError, StripsError
 
 if TYPE_CHECKING:

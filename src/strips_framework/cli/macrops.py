@@ -7,7 +7,7 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.errors import InputError, StripsError
 
 if TYPE_CHECKING:
@@ -74,7 +74,7 @@ def _problem(planner: Planner, files: list[Path], rest: int, command: str) -> Pr
 
 
 def learn(planner: Planner, args: argparse.Namespace) -> int:
-    from strips_framework.macrops.learning import learn_sequence
+    from strips_framework.learning import learn_sequence
     from strips_framework.macrops.library_file import read_library, write_library
     from strips_framework.macrops.macrop import Library
 

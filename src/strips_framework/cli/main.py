@@ -13,14 +13,15 @@ from typing import TYPE_CHECKING
 
 from strips_framework import __version__
 from strips_framework.bench import command as bench_command
-from strips_framework.cli import exit_codes, report
+from strips_framework import exit_codes
+from strips_framework.cli import report
 from strips_framework.cli import macrops as macrop_command
 from strips_framework.errors import StripsError
 from strips_framework.limits import Clock, LimitReached
 from strips_framework.pddl.files import is_pddl
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Choice, Config
-from strips_framework.plugin.registry import KINDS, Registration
+from strips_framework.plugin.registry import KINDS, Registration, Registry
 from strips_framework.result import Result, Status
 from strips_framework.user_files import check_writable, write_atomically
 
@@ -131,6 +132,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = _parser(argv[0] if argv and argv[0] in COMMAND_PARSERS else None).parse_args(argv)
         if args.command == "bench":
             return bench_command.bench(args)
+        if args.command == "plugins":  # what is installed, whatever a config would choose
+            return _plugins(Registry.from_plugins())
         config = Config.from_file(args.config) if getattr(args, "config", None) else Config.default()
         if args.command == "solve":
             domain, problem = _domain_and_problem(args.files, "solve")
@@ -143,9 +146,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _prove(planner, args)
         if args.command == "validate":
             return _validate(planner, args)
-        if args.command in MACROP_COMMANDS:
-            return MACROP_COMMANDS[args.command](planner, args)
-        return _plugins(planner)
+        return MACROP_COMMANDS[args.command](planner, args)
     except StripsError as error:
         print(f"strips: error: {error}", file=sys.stderr)
         return exit_codes.INPUT_ERROR
@@ -279,10 +280,10 @@ def _validate(planner: Planner, args: argparse.Namespace) -> int:
     return exit_codes.SOLVED if outcome.valid else exit_codes.INVALID_PLAN
 
 
-def _plugins(planner: Planner) -> int:
+def _plugins(registry: Registry) -> int:
     for kind, (_, _, plural) in KINDS.items():
         print(f"{plural}:")
-        for registration in planner.registry.registrations(kind):
+        for registration in registry.registrations(kind):
             origin = registration.distribution or "builtin"
             print(f"  {registration.name:<20} {origin} ({registration.plugin})")
             doc = (registration.cls.__doc__ or "").strip().splitlines()

@@ -10,17 +10,27 @@ CLI turns them into exit codes 22 and 23.
 The alarm rings :data:`GRACE_SECONDS` after the run's deadline, not at it: a search that
 stopped at its own limit (it watches the same clock) is then still writing its result,
 and an alarm at the same instant would interrupt that and lose its statistics.
+
+The alarm is the last resort, so it cannot be lost. :class:`LimitReached` is a
+``BaseException`` (no ``except Exception`` catches it), and the alarm rings again every
+:data:`GRACE_SECONDS`: a second ring means the first exception was swallowed anyway (a
+bare ``except:``, or a garbage-collection callback or ``__del__``, where Python prints an
+exception and drops it), and the process then stops at once with exit code 23 and the
+time it ran, as Fast Downward's driver does when a search overruns its limit.
 """
 
 from __future__ import annotations
 
+import os
 import resource
 import signal
+import sys
 import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from types import FrameType
 
+from strips_framework.exit_codes import OUT_OF_TIME
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.result import Status
 
@@ -28,17 +38,31 @@ from strips_framework.result import Status
 GRACE_SECONDS = 0.5
 
 
-def _out_of_time(signum: int, frame: FrameType | None) -> None:
-    raise LimitReached(Status.TIME_LIMIT)
+class _Alarm:
+    """The SIGALRM handler of one run: the first ring raises :class:`LimitReached`, a
+    later one (the first was swallowed) ends the process."""
+
+    def __init__(self, clock: Clock) -> None:
+        self.clock = clock
+        self.rung = False
+
+    def __call__(self, signum: int, frame: FrameType | None) -> None:
+        if not self.rung:
+            self.rung = True
+            raise LimitReached(Status.TIME_LIMIT)
+        lines = f"; status: {Status.TIME_LIMIT}\n; time: {self.clock.elapsed():.3f} s\n"
+        os.write(sys.stdout.fileno(), lines.encode())
+        os.write(sys.stderr.fileno(), b"strips: error: the time limit's exception was swallowed; stopped\n")
+        os._exit(OUT_OF_TIME)
 
 
 @contextmanager
 def enforced(limits: Limits, clock: Clock) -> Iterator[None]:
     """Apply the memory limit, and ``clock``'s deadline as an alarm, to the process while
     the block runs."""
-    old_handler = signal.signal(signal.SIGALRM, _out_of_time)
+    old_handler = signal.signal(signal.SIGALRM, _Alarm(clock))
     remaining = max(clock.deadline - time.perf_counter(), 0.0)
-    signal.setitimer(signal.ITIMER_REAL, remaining + GRACE_SECONDS)
+    signal.setitimer(signal.ITIMER_REAL, remaining + GRACE_SECONDS, GRACE_SECONDS)
     old_memory = resource.getrlimit(resource.RLIMIT_AS)
     if limits.memory is not None:
         cap, hard = limits.memory * 2**20, old_memory[1]

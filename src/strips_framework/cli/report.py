@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.result import Result, Status, limit_key
 
 #: The ``schema`` field of the JSON document: bumped when a field changes meaning or goes.

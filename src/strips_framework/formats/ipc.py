@@ -3,11 +3,11 @@ line giving the cost as Fast Downward writes it."""
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from pathlib import Path
 
 from strips_framework.errors import InputError
+from strips_framework.plan_steps import split_step
 from strips_framework.user_files import read_text
 
 
@@ -15,24 +15,6 @@ def plan_text(steps: Sequence[str], cost: int, uses_costs: bool) -> str:
     """The plan file: the steps, then ``; cost = N (unit cost)`` or ``(general cost)``."""
     kind = "general cost" if uses_costs else "unit cost"
     return "".join(f"{step}\n" for step in steps) + f"; cost = {cost} ({kind})\n"
-
-
-_FUNCTIONAL = re.compile(r"\s*([^\s(),]+)\s*(?:\(([^()]*)\))?\s*")
-_IPC = re.compile(r"\s*\(\s*([^\s()]+)((?:\s+[^\s()]+)*)\s*\)\s*")
-
-
-def split_step(text: str, *, ipc_only: bool = False) -> list[str] | None:
-    """``["name", "arg", ...]`` from ``(name arg ...)`` or (unless ``ipc_only``, as for
-    PDDL) the native ``name(arg, ...)``; ``None`` when the text is neither."""
-    ipc = _IPC.fullmatch(text)
-    if ipc:
-        return [ipc.group(1), *ipc.group(2).split()]
-    functional = None if ipc_only else _FUNCTIONAL.fullmatch(text)
-    if functional is None:
-        return None
-    inside = functional.group(2)
-    args = [] if inside is None or not inside.strip() else [a.strip() for a in inside.split(",")]
-    return None if "" in args else [functional.group(1), *args]
 
 
 def read_plan(path: Path, *, ipc_only: bool = False) -> list[str]:

@@ -12,7 +12,7 @@ the steps.
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import TYPE_CHECKING
 
 from strips_framework.grounding.task import GroundOperator, GroundTask
@@ -23,7 +23,6 @@ from strips_framework.macrops.table import TriangleTable
 
 if TYPE_CHECKING:
     from strips_framework.limits import Clock
-    from strips_framework.planner import Planner
     from strips_framework.result import Result
 
 #: Macro operator names start with this, so that plans can be expanded.
@@ -63,12 +62,16 @@ def with_macros(
 
 
 def solve_with_macros(
-    planner: Planner, task: GroundTask, library: Library, clock: Clock | None = None
+    solve_task: Callable[[GroundTask, Clock | None], Result],
+    task: GroundTask,
+    library: Library,
+    clock: Clock | None = None,
 ) -> Result:
-    """Search ``task`` with the library's macro operators added; the plan comes back in
+    """Search ``task`` with the library's macro operators added, by ``solve_task`` (the
+    planner's :meth:`~strips_framework.planner.Planner.solve_task`); the plan comes back in
     the task's own steps (on a unit-cost task its cost is then its length)."""
     grown, steps_of = with_macros(task, library)
-    result = planner.solve_task(grown, clock)
+    result = solve_task(grown, clock)
     if result.plan is None:
         return result
     steps = tuple(expand(result.plan, steps_of))

@@ -1,17 +1,18 @@
-"""Learning MACROPs from solved problems, and the builtin macro learner.
+"""The macro learner's plugin kind, and the builtin macro learner.
 
 A macro learner turns a solved problem and its plan into a library with (perhaps) one
 more MACROP; it is a plugin kind (``[learner]`` in the config, registered through
 ``strips_register_macro_learners``), so other generalization methods can be swapped in like
-provers and evaluators. :func:`learn_sequence` is ``strips learn``: it solves the problems
-in turn, each with the library learned so far, and learns from each plan.
+provers and evaluators. The workflow that solves problems and learns from their plans,
+``strips learn``, drives the planner facade, so it lives beside it
+(:mod:`strips_framework.learning`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, ClassVar, Protocol
+from typing import ClassVar, Protocol
 
 from attrs import field, frozen, validators
 
@@ -21,10 +22,6 @@ from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import Step
 from strips_framework.worldmodel.problem import Problem
-
-if TYPE_CHECKING:
-    from strips_framework.planner import Planner
-    from strips_framework.result import Result
 
 
 class MacroLearner(Protocol):
@@ -65,79 +62,3 @@ class TriangleTableLearner:
             grown = Library(grown.macrops[1:])
             note += f"; {oldest.name} dropped (max_macrops = {self.max_macrops})"
         return grown, note
-
-
-@frozen
-class Lesson:
-    """One problem of a learning sequence: how it was solved and what was learned."""
-
-    problem: str
-    status: str
-    nodes: int
-    seconds: float
-    plan_length: int | None
-    macrops_used: int
-    note: str
-
-
-def solve_with(
-    planner: Planner, path: Path, library: Library, domain: Path | None = None
-) -> tuple[Problem, Result, list[Step] | None]:
-    """Solve one problem with the library (a forward strategy gets it as macro
-    operators); the problem as a first-order one, the result and the plan's steps."""
-    from strips_framework.macrops.forward import solve_with_macros
-    from strips_framework.macrops.ground_table import parse_plan, solution_steps
-    from strips_framework.pddl.files import is_pddl
-
-    macrops = library if library.macrops else None
-    if not is_pddl(path, domain):
-        problem = planner.load(path)
-        result = planner.solve(problem, library=macrops)
-        return problem, result, solution_steps(result)
-    from strips_framework.pddl import to_problem
-
-    pddl = planner.load_pddl(path, domain)
-    problem = to_problem(pddl)
-    if not planner.searches_ground_tasks:
-        result = planner.solve(problem, library=macrops)
-        return problem, result, solution_steps(result)
-    from strips_framework.grounding import ground
-
-    task = ground(pddl)
-    found = planner.solve_task(task) if macrops is None else solve_with_macros(planner, task, macrops)
-    return problem, found, None if found.plan is None else parse_plan(problem, found.plan)
-
-
-def _figures(result: Result) -> tuple[int, float, int]:
-    """Nodes (forward search: expansions), seconds, and MACROPs on the solution path."""
-    from strips_framework.forward.result import ForwardStatistics
-    from strips_framework.means_ends.result import WorldModelStatistics
-
-    statistics = result.statistics
-    if isinstance(statistics, ForwardStatistics):
-        return statistics.expanded, statistics.search_seconds, 0
-    assert isinstance(statistics, WorldModelStatistics) and result.tree is not None
-    used = sum(1 for node in result.tree.solution_path()
-               if node.applied is not None and len(node.applied.steps()) > 1)
-    return statistics.nodes, statistics.seconds, used
-
-
-def learn_sequence(
-    planner: Planner,
-    problems: Sequence[tuple[Path | None, Path]],
-    library: Library,
-    learner: MacroLearner,
-) -> tuple[Library, list[Lesson]]:
-    """Solve ``(domain, problem)`` pairs in turn, each with the MACROPs learned so far, and
-    learn from every plan found."""
-    lessons = []
-    for domain, path in problems:
-        problem, result, steps = solve_with(planner, path, library, domain)
-        nodes, seconds, used = _figures(result)
-        if steps is None:
-            note = "not solved: nothing learned"
-        else:
-            library, note = learner.learn(problem, steps, library)
-        lessons.append(Lesson(path.name, result.status, nodes, seconds,
-                              None if steps is None else len(steps), used, note))
-    return library, lessons

@@ -33,13 +33,14 @@
     disturbance = 0.05   # chance that the world changes after a step
     seed = 0
 
-Every table is optional; missing ones take the defaults in :data:`DEFAULT_CHOICES`.
+Every table is optional; missing ones take the registered defaults of :data:`DEFAULTS`.
 Mistakes are reported at the line the key is written on (when the file writes it), with
 their key path and what was expected.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
@@ -53,22 +54,30 @@ from strips_framework.user_files import KeyLines, read_toml_with_keys
 COMPONENTS = (
     "strategy", "prover", "difference", "relevance", "evaluator", "heuristic", "learner"
 )
-DEFAULT_CHOICES = {
-    "strategy": "means-ends",
-    "prover": "resolution",
-    "difference": "uncompleted-proof",
-    "relevance": "add-list",
-    "evaluator": "paper",
-    "heuristic": "ff",
-    "learner": "triangle-table",
+#: What each table takes when the config file names no implementation: the first of these
+#: names that is registered (:func:`default_name`). Most come from plugin distributions
+#: (``resolution`` from strips-resolution-prover, ``paper`` and ``ff`` from
+#: strips-evaluators), so with plugin autoload off a run names what it needs itself.
+DEFAULTS: dict[str, tuple[str, ...]] = {
+    "strategy": ("means-ends",),
+    "prover": ("resolution",),
+    "difference": ("uncompleted-proof",),
+    "relevance": ("add-list",),
+    "evaluator": ("paper",),
+    "heuristic": ("ff",),
+    "learner": ("triangle-table",),
 }
+#: The first preference of every table (the config before the registry is asked).
+DEFAULT_CHOICES = {kind: names[0] for kind, names in DEFAULTS.items()}
 #: Tables that configure a use rather than a component: ``[execution]`` is PLANEX's fault
 #: model (``strips execute``, :mod:`strips_framework.macrops.planex`), ``[macrops]`` how a
 #: search uses a MACROP library (:class:`strips_framework.macrops.search.MacroUse`).
 SECTIONS = ("execution", "macrops")
-#: The strategy PDDL input gets when the config names none: what Fast Downward's users
-#: expect of ``strips solve DOMAIN PROBLEM`` (lazy greedy search with hFF).
-PDDL_DEFAULT_STRATEGY = "lazy-gbfs"
+#: The strategies PDDL input gets when the config names none, in order of preference (the
+#: first registered one): what Fast Downward's users expect of ``strips solve DOMAIN
+#: PROBLEM`` (lazy greedy search with hFF).
+PDDL_DEFAULT_STRATEGIES = ("lazy-gbfs",)
+PDDL_DEFAULT_STRATEGY = PDDL_DEFAULT_STRATEGIES[0]
 #: The config table that chooses a plugin kind, where it is not the kind itself: both
 #: kinds of strategy are named in ``[strategy]`` (so their names must not clash).
 TABLE_OF = {"ground-strategy": "strategy"}
@@ -167,13 +176,30 @@ class Config(Record):
         chosen = frozenset(kind for kind in COMPONENTS if kind in data)
         return cls(choices, limits, source, chosen, sections)
 
-    def for_pddl(self) -> Config:
-        """This config for PDDL input: the strategy defaults to :data:`PDDL_DEFAULT_STRATEGY`
-        unless the config chose one."""
-        if "strategy" in self.chosen or self.choices["strategy"].name == PDDL_DEFAULT_STRATEGY:
+    def for_pddl(self, registry: Registry | None = None) -> Config:
+        """This config for PDDL input: the strategy defaults to the first registered of
+        :data:`PDDL_DEFAULT_STRATEGIES` (the first of them without a ``registry``) unless
+        the config chose one."""
+        if "strategy" in self.chosen:
             return self
-        choices = {**self.choices, "strategy": Choice("strategy", PDDL_DEFAULT_STRATEGY)}
-        return self._replace(choices=choices)
+        kinds = ("ground-strategy", "strategy")
+        name = PDDL_DEFAULT_STRATEGY if registry is None else default_name(registry, kinds, PDDL_DEFAULT_STRATEGIES)
+        if self.choices["strategy"].name == name:
+            return self
+        return self._replace(choices={**self.choices, "strategy": Choice("strategy", name)})
+
+    def with_registered_defaults(self, registry: Registry, tables: Iterable[str]) -> Config:
+        """This config with each of ``tables`` that the config file did not choose set to
+        its registered default (:func:`default_name`)."""
+        choices = dict(self.choices)
+        for table in tables:
+            if table in self.chosen or table not in DEFAULTS:
+                continue
+            kinds = ("strategy", "ground-strategy") if table == "strategy" else (table,)
+            name = default_name(registry, kinds, (choices[table].name, *DEFAULTS[table]))
+            if name != choices[table].name:
+                choices[table] = Choice(table, name)
+        return self if choices == self.choices else self._replace(choices=choices)
 
     def table_of(self, kind: str) -> str:
         """The config table that chooses the implementation of plugin kind ``kind``."""
@@ -223,9 +249,20 @@ class Config(Record):
         try:
             return registry.get(kind, self.choice(kind).name)
         except PluginError as error:
-            if table not in self.chosen:
-                raise  # a default: no key of the config file to point at
+            if table not in self.chosen:  # a default: no key of the config file to point at
+                raise PluginError(f"no [{table}] chosen, and the default {error}") from None
             raise PluginError(f"{self.source.at(table + '.name')}: '{table}.name': {error}") from None
+
+
+def default_name(registry: Registry, kinds: tuple[str, ...], preferred: tuple[str, ...]) -> str:
+    """The default implementation of a table that takes ``kinds``: the first ``preferred``
+    name registered, else the only one registered. Otherwise the first preference, whose
+    lookup then says what is missing and what is registered instead."""
+    registered = [name for kind in kinds for name in registry.names(kind)]
+    for name in preferred:
+        if name in registered:
+            return name
+    return registered[0] if len(registered) == 1 else preferred[0]
 
 
 def _type_name(value: object) -> str:

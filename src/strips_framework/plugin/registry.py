@@ -49,20 +49,6 @@ KINDS = {
     "learner": ("strips_register_macro_learners", "macro learner", "macro learners"),
 }
 
-#: Distributions known to provide implementations, for the hint in "not registered" errors.
-KNOWN_PROVIDERS = {
-    ("prover", "resolution"): "strips-resolution-prover",
-    ("prover", "z3"): "strips-z3-prover",
-    ("evaluator", "paper"): "strips-evaluators",
-    ("evaluator", "breadth-first"): "strips-evaluators",
-    ("evaluator", "goal-count"): "strips-evaluators",
-    ("evaluator", "astar-goals"): "strips-evaluators",
-    **{
-        ("heuristic", name): "strips-evaluators"
-        for name in ("blind", "goal-count", "hmax", "hadd", "ff", "lmcut", "lmcount")
-    },
-}
-
 AUTOLOAD_SWITCH = "STRIPS_DISABLE_PLUGIN_AUTOLOAD"
 
 
@@ -249,15 +235,25 @@ class Registry:
         found = self._kind(kind).get(name)
         if found is not None:
             return found
-        words = KINDS[kind][1]
-        available = ", ".join(self.names(kind)) or "none"
-        message = f"{words} {name!r} is not registered (available: {available})"
-        provider = KNOWN_PROVIDERS.get((kind, name))
-        if provider:
-            message += f"; is {provider} installed?"
-        else:
-            message += "; is the plugin that provides it installed? 'strips plugins' lists them"
-        raise PluginError(message)
+        raise PluginError(self._not_registered(kind, name))
+
+    def _not_registered(self, kind: str, name: str) -> str:
+        """Why ``name`` cannot be had: what is registered instead, a close name, and
+        whether the installed plugins were loaded at all."""
+        import difflib
+
+        names = self.names(kind)
+        message = f"{KINDS[kind][1]} {name!r} is not registered (available: {', '.join(names) or 'none'})"
+        close = difflib.get_close_matches(name, names, n=1)
+        if close:
+            return f"{message}; did you mean {close[0]!r}?"
+        if os.environ.get(AUTOLOAD_SWITCH):
+            from strips_framework.plugin import entry_points, hookspecs
+
+            installed = sorted({dist for _, _, dist in entry_points.entry_points(hookspecs.PROJECT)})
+            skipped = f" (installed: {', '.join(installed)})" if installed else ""
+            return f"{message}; plugin autoload is off ({AUTOLOAD_SWITCH} is set), so no installed plugin is loaded{skipped}"
+        return f"{message}; is the plugin that provides it installed? 'strips plugins' lists them"
 
     def loader_for(self, suffix: str) -> Registration:
         """The problem loader for files ending in ``suffix``."""

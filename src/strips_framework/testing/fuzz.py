@@ -44,7 +44,7 @@ FORMATS = (
     "command-line",
 )
 
-#: Exit codes a run may end with (see :mod:`strips_framework.cli.exit_codes`); argparse's
+#: Exit codes a run may end with (see :mod:`strips_framework.exit_codes`); argparse's
 #: ``--help`` exits 0 and its usage errors 2. Not 32: a plugin of this repository raising
 #: on some input is a bug the fuzzer is there to find.
 KNOWN_EXIT_CODES = frozenset({0, 1, 2, 11, 12, 22, 23, 130})

@@ -35,7 +35,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from attrs import frozen
 
 from strips_framework.errors import StripsError
-from strips_framework.formats.ipc import split_step
+from strips_framework.plan_steps import split_step
 from strips_framework.logic.formulas import (
     And,
     Atomic,

@@ -1,4 +1,9 @@
-"""The ``strips`` command's exit codes: Fast Downward's meanings, for every strategy.
+"""The ``strips`` command's exit codes, for every strategy and for ``strips bench``'s runs.
+
+Ours, not Fast Downward's, though chosen near them: 0, 11, 12, 22, 23 and 32 mean what
+they do in FD's search component (32: its "critical error"); 1 and 2 do not (FD: a plan
+found, then out of memory or time; its input errors are 31, 33 and 36), and 130 is the
+shell's code for Ctrl-C.
 
 ===  ==========================================================================
 0    a plan was found
