@@ -151,3 +151,10 @@ def test_every_status_has_an_exit_code():
     from strips_framework.result import Status
 
     assert set(exit_codes.BY_STATUS) == set(Status)
+
+
+def test_plugins_lists_the_core_alone(capsys, monkeypatch):
+    monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
+    assert main(["plugins"]) == 0
+    out = capsys.readouterr().out
+    assert "means-ends           builtin" in out and "strips-evaluators" not in out

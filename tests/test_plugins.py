@@ -104,3 +104,29 @@ def test_misspelled_hook_implementation_is_an_error():
 def test_autoload_switch(monkeypatch):
     monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
     assert Registry(get_plugin_manager()).names("prover") == []
+
+
+class _OnlyProver:
+    @hookimpl
+    def strips_register_provers(self):
+        from strips_z3_prover import Z3Prover
+
+        return [Z3Prover]
+
+
+def test_defaults_come_from_what_is_registered(monkeypatch):
+    """The core alone: the preferred default 'resolution' is missing, the one prover that
+    is registered takes its place; a table with nothing registered keeps its first
+    preference, whose lookup says what is missing."""
+    from strips_framework.plugin.config import Config, default_name
+
+    monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
+    registry = Registry(get_plugin_manager([_OnlyProver()]))
+    assert default_name(registry, ("prover",), ("resolution",)) == "z3"
+    config = Config.default().with_registered_defaults(registry, ("prover", "evaluator"))
+    assert config.choices["prover"].name == "z3"
+    assert config.choices["evaluator"].name == "paper"
+    with pytest.raises(PluginError, match=r"no \[evaluator\] chosen, and the default evaluator 'paper' is not registered"):
+        config.registration(registry, "evaluator")
+    chosen = Config.from_dict({"prover": "resolution"}).with_registered_defaults(registry, ("prover",))
+    assert chosen.choices["prover"].name == "resolution"  # what the file chose stays
