@@ -75,3 +75,18 @@ def test_errors_name_the_file_and_key_path(tmp_path, registry, text, message):
 def test_example_configs_are_valid(path):
     planner = Planner.create(Config.from_file(path))
     assert str(planner.config.source) == str(path)
+
+
+def test_choices_and_configs_hash_and_share_no_default():
+    """``Choice``'s options and ``Config``'s sections were one shared ``{}`` default: a
+    change to one changed every later default, and ``hash`` raised on the dict."""
+    from strips_framework.plugin.config import Choice
+
+    first = Choice("prover", "resolution")
+    first.options["effort"] = 1
+    assert Choice("prover", "resolution").options == {}
+    assert hash(Choice("prover", "z3", {"tactics": ["a"]})) == hash(Choice("prover", "z3", {"tactics": ["a"]}))
+    default = Config.default()
+    default.sections["macrops"] = {"instances": 1}
+    assert Config.default().sections == {"execution": {}, "macrops": {}}
+    assert hash(Config.default()) == hash(Config.default())

@@ -40,7 +40,7 @@ their key path and what was expected.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -92,10 +92,13 @@ class Choice(Record):
 
     __slots__ = ("kind", "name", "options")
 
-    def __init__(self, kind: str, name: str, options: dict[str, Any] = {}) -> None:
+    def __init__(self, kind: str, name: str, options: Mapping[str, Any] | None = None) -> None:
         self.kind = kind
         self.name = name
-        self.options = options
+        self.options = dict(options or {})  # its own: never shared with a caller or a default
+
+    def __hash__(self) -> int:  # the option values may be TOML arrays or tables
+        return hash((self.kind, self.name, tuple(self.options)))
 
 
 class Config(Record):
@@ -118,13 +121,16 @@ class Config(Record):
         limits: Limits,
         source: KeyLines = KeyLines("<defaults>"),
         chosen: frozenset[str] = frozenset(),
-        sections: dict[str, dict[str, Any]] = {},
+        sections: Mapping[str, dict[str, Any]] | None = None,
     ) -> None:
-        self.choices = choices
+        self.choices = dict(choices)
         self.limits = limits
         self.source = source
         self.chosen = chosen
-        self.sections = sections
+        self.sections = dict(sections or {})
+
+    def __hash__(self) -> int:  # choices and sections are dicts; equal configs hash alike
+        return hash((tuple(self.choices.values()), self.limits, self.source, self.chosen, tuple(self.sections)))
 
     @classmethod
     def default(cls) -> Config:
