@@ -49,9 +49,14 @@ def test_string_shorthand(tmp_path):
 
 
 @pytest.mark.parametrize(("text", "message"), [
-    ("[provr]\nname = 'x'\n", r"unknown key 'provr' \(expected one of: strategy, prover"),
+    ("[provr]\nname = 'x'\n",
+     r"unknown key 'provr'; did you mean 'prover'\? \(expected one of: strategy, prover"),
     ("[strategy]\nmax_goal = 3\n",
-     r"unknown key 'strategy.max_goal': search strategy 'means-ends' has no option 'max_goal' \(options: max_goals\)"),
+     r"unknown key 'strategy.max_goal': search strategy 'means-ends' has no option 'max_goal'; "
+     r"did you mean 'max_goals'\? \(options: max_goals\)"),
+    ("[macrops]\ninstance = 3\n",
+     r"strips.toml:2: unknown key 'macrops.instance': 'macrops' has no option 'instance'; did you mean 'instances'"),
+    ("[execution]\nfailure = 2\n", r"strips.toml:2: bad value for 'execution.failure': expected a value <= 1"),
     ("[strategy]\nmax_goals = 0\n", r"bad value for 'strategy.max_goals': .*> 0.* \(got 0\)"),
     ("[strategy]\nmax_goals = 'many'\n",
      r"bad value for 'strategy.max_goals': expected an integer, got a string 'many'"),

@@ -1,5 +1,5 @@
-"""Declared options (``strips_framework.options``) and the attrs classes third-party
-plugins declared their options with before: the config builds and checks both alike."""
+"""Declared options (``strips_framework.options``), the one way options are declared: a
+class declared otherwise (attrs, as third-party plugins once did) has none."""
 
 from __future__ import annotations
 
@@ -32,7 +32,7 @@ class Tuned(Configurable):
 
 @attrs.frozen
 class OldStyle:
-    """A heuristic whose options are attrs fields, as third-party plugins wrote them."""
+    """A heuristic whose options are attrs fields, as third-party plugins once wrote them."""
 
     name: ClassVar[str] = "old-style"
     depth: int = attrs.field(default=2, validator=attrs.validators.instance_of(int))
@@ -81,29 +81,31 @@ def test_unknown_options_are_refused_and_instances_are_immutable():
         Tuned().weight = 3.0  # type: ignore[misc]
 
 
-def test_declared_options_of_both_kinds_of_class():
+def test_declared_options_only_of_configurable_classes():
     assert declared_options(Tuned) == {
         "weight": 1.0, "rounds": 3, "mode": "fast", "limit": None, "verbose": False
     }
-    assert declared_options(OldStyle) == {"depth": 2, "table": {}}
+    assert declared_options(OldStyle) == {}
     assert declared_options(dict) == {}
 
 
-def test_the_config_builds_both_and_reports_bad_values_by_key():
+def test_the_config_builds_them_and_reports_bad_values_by_key():
     config = {"strategy": "astar", "heuristic": {"name": "tuned", "weight": 3, "mode": "exact"}}
     planner = Planner.create(config, extra_plugins=[_Plugin()])
     assert planner.config.build(planner.registry, "heuristic") == Tuned(weight=3.0, mode="exact")
-    old = Planner.create({"strategy": "astar", "heuristic": {"name": "old-style", "depth": 4}},
-                         extra_plugins=[_Plugin()])
-    assert old.config.build(old.registry, "heuristic") == OldStyle(depth=4)
-    registration = old.registry.get("heuristic", "old-style")
-    assert registration.options() == [("depth", 2), ("table", {})]
+    old = Planner.create({"strategy": "astar", "heuristic": "old-style"}, extra_plugins=[_Plugin()])
+    assert old.config.build(old.registry, "heuristic") == OldStyle()
+    assert old.registry.get("heuristic", "old-style").options() == []
+    with pytest.raises(ConfigError, match=r"has no option 'depth' \(options: none; a class declares "
+                       r"options by deriving from strips_framework.options.Configurable\)"):
+        Planner.create({"strategy": "astar", "heuristic": {"name": "old-style", "depth": 4}},
+                       extra_plugins=[_Plugin()])
     with pytest.raises(ConfigError, match=r"bad value for 'heuristic.rounds': expected a value >= 1 \(got 0\)"):
         Planner.create({"strategy": "astar", "heuristic": {"name": "tuned", "rounds": 0}},
                        extra_plugins=[_Plugin()])
-    with pytest.raises(ConfigError, match="bad value for 'heuristic.depth': expected an integer, got a string 'deep'"):
-        Planner.create({"strategy": "astar", "heuristic": {"name": "old-style", "depth": "deep"}},
+    with pytest.raises(ConfigError, match="bad value for 'heuristic.rounds': expected an integer, got a string 'deep'"):
+        Planner.create({"strategy": "astar", "heuristic": {"name": "tuned", "rounds": "deep"}},
                        extra_plugins=[_Plugin()])
-    with pytest.raises(ConfigError, match=r"has no option 'wieght' \(options: limit, mode, rounds, verbose, weight\)"):
+    with pytest.raises(ConfigError, match=r"has no option 'wieght'; did you mean 'weight'\? \(options: limit, mode, rounds, verbose, weight\)"):
         Planner.create({"strategy": "astar", "heuristic": {"name": "tuned", "wieght": 1}},
                        extra_plugins=[_Plugin()])

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 
 class StripsError(Exception):
     """Base of every error the CLI reports as a one-line message."""
@@ -25,3 +27,11 @@ class ConfigError(StripsError):
 
 class PluginError(StripsError):
     """An unknown or duplicate implementation name."""
+
+
+def did_you_mean(word: str, known: Iterable[str]) -> str:
+    """``; did you mean 'x'?`` for the known word closest to a misspelled one, else ``""``."""
+    import difflib  # only on the way to an error message
+
+    close = difflib.get_close_matches(word, list(known), n=1)
+    return f"; did you mean '{close[0]}'?" if close else ""

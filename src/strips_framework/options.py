@@ -8,14 +8,17 @@ its default), checks it and refuses a wrong value with :class:`OptionError`, a
 ``ValueError`` naming the option and what was expected, which the config reports at the
 key's line. Instances are immutable and compare by type and option values.
 
-attrs classes keep working unchanged: their ``init`` fields are their options and their
-validators check them. attrs is imported only for a class that is one, because importing
-it and building attrs classes costs more than a small task's whole solve: the PDDL
-solve path declares its options here (``benchmarks/startup_vs_pyperplan.py``).
+This is the one way options are declared, in the core and in every plugin here: not
+attrs, because importing it and building attrs classes costs more than a small task's
+whole solve (``benchmarks/startup_declarations.py``: 40 classes of three options take
+about 90 ms with attrs, under 1 ms here), and because the config's messages then come
+from :class:`OptionError` itself, not from another library's exceptions.
 """
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable, Mapping
 from typing import Any, ClassVar
 
 from strips_framework.records import Record
@@ -47,10 +50,13 @@ class Option:
     integer given to an option that accepts floats (TOML writes ``2`` for ``2.0``)
     becomes a float. ``minimum``/``maximum`` bound numbers (``exclusive_minimum`` makes the
     lower bound strict); ``choices`` lists the only values allowed; ``optional`` also
-    accepts ``None``. ``doc`` says what the option does (``strips plugins`` shows it)."""
+    accepts ``None``; ``finite`` refuses ``inf`` and ``nan``. ``check`` is any further
+    test: it gets the value and returns what was expected when it refuses it (else
+    ``None``); ``convert`` then makes the stored value (say, a read-only copy of a table).
+    ``doc`` says what the option does (``strips plugins`` shows it)."""
 
     __slots__ = ("name", "types", "default", "minimum", "exclusive_minimum", "maximum",
-                 "choices", "optional", "doc")  # fmt: skip
+                 "choices", "optional", "finite", "check_value", "convert", "doc")  # fmt: skip
 
     def __init__(
         self,
@@ -63,12 +69,16 @@ class Option:
         maximum: float | None = None,
         choices: tuple[object, ...] = (),
         optional: bool = False,
+        finite: bool = False,
+        check: Callable[[Any], str | None] | None = None,
+        convert: Callable[[Any], Any] | None = None,
         doc: str = "",
     ) -> None:
         self.name, self.default, self.doc = name, default, doc
         self.types = types if isinstance(types, tuple) else (types,)
         self.minimum, self.exclusive_minimum, self.maximum = minimum, exclusive_minimum, maximum
-        self.choices, self.optional = choices, optional
+        self.choices, self.optional, self.finite = choices, optional, finite
+        self.check_value, self.convert = check, convert
 
     def check(self, value: object) -> Any:
         """``value`` as the option stores it; :class:`OptionError` when it is refused."""
@@ -90,7 +100,13 @@ class Option:
             raise OptionError(self.name, f"expected a value {bound} (got {value!r})")
         if high is not None and not value <= high:  # type: ignore[operator]
             raise OptionError(self.name, f"expected a value <= {high} (got {value!r})")
-        return value
+        if self.finite and isinstance(value, float) and not math.isfinite(value):
+            raise OptionError(self.name, f"expected a finite number (got {value!r})")
+        if self.check_value is not None:
+            expected = self.check_value(value)
+            if expected is not None:
+                raise OptionError(self.name, f"expected {expected} (got {value!r})")
+        return value if self.convert is None else self.convert(value)
 
 
 class Configurable(Record):
@@ -111,28 +127,26 @@ class Configurable(Record):
             if key not in declared_names:
                 raise TypeError(f"{type(self).__qualname__} has no option {key!r}")
         for option in self.options:
-            value = option.check(values[option.name]) if option.name in values else option.default
+            if option.name in values:
+                value = option.check(values[option.name])
+            else:  # a default is stored as a given value would be (converted)
+                value = option.default if option.convert is None else option.convert(option.default)
             object.__setattr__(self, option.name, value)
 
     def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"{type(self).__qualname__} is immutable: options are set when it is built")
 
+    def __hash__(self) -> int:  # a table option (a read-only mapping) hashes by its items
+        values = (tuple(sorted(v.items())) if isinstance(v, Mapping) else v for v in self._values())
+        return hash((type(self).__name__, *values))
+
+
+def declared(cls: type) -> tuple[Option, ...]:
+    """The options of ``cls`` in declaration order: a :class:`Configurable`'s
+    :attr:`~Configurable.options`; none for any other class."""
+    return cls.options if isinstance(cls, type) and issubclass(cls, Configurable) else ()
+
 
 def declared_options(cls: type) -> dict[str, object]:
-    """The options of ``cls`` with their defaults, in declaration order: a
-    :class:`Configurable`'s :attr:`~Configurable.options`, an attrs class's ``init`` fields
-    (a factory default called), nothing for any other class."""
-    if isinstance(cls, type) and issubclass(cls, Configurable):
-        return {option.name: option.default for option in cls.options}
-    if not hasattr(cls, "__attrs_attrs__"):
-        return {}
-    import attrs  # only for an attrs class, which has imported it already
-
-    found: dict[str, object] = {}
-    for field in attrs.fields(cls):
-        if field.init:
-            default = field.default
-            if isinstance(default, attrs.Factory):  # type: ignore[arg-type]
-                default = default.factory()
-            found[field.alias or field.name] = default
-    return found
+    """The options of ``cls`` with their defaults, in declaration order."""
+    return {option.name: option.default for option in declared(cls)}

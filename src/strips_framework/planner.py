@@ -21,7 +21,7 @@ from strips_framework.limits import Clock
 from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
 from strips_framework.plugin.config import Config
-from strips_framework.plugin.registry import Registry
+from strips_framework.plugin.registry import KINDS, Registry
 from strips_framework.records import Record
 from strips_framework.user_files import is_file
 
@@ -98,7 +98,26 @@ class Planner(Record):
         for kind in kinds:
             self.config.build(self.registry, kind)
         check_combination(self.registry, self.config, self.kinds_used())
+        self._warn_unused_tables()
         return self
+
+    def _warn_unused_tables(self) -> None:
+        """A warning naming the tables the config file chose that this strategy never
+        uses (``[prover]`` with a forward search, ``[heuristic]`` with means-ends): the
+        run does not do what the file seems to ask. ``[learner]`` is ``strips learn``'s."""
+        import warnings
+
+        used = {self.config.table_of(kind) for kind in self.kinds_used()} | {"learner"}
+        unused = sorted(self.config.chosen - used)
+        if unused:
+            kind = self.config.strategy_kind(self.registry)
+            name = self.config.choices["strategy"].name
+            tables = ", ".join(f"[{table}]" for table in unused)
+            uses = ", ".join(f"[{self.config.table_of(k)}]" for k in self.kinds_used())
+            warnings.warn(
+                f"{self.config.source}: {tables} not used: {KINDS[kind][1]} {name!r} uses {uses}",
+                stacklevel=3,
+            )
 
     def kinds_used(self) -> tuple[str, ...]:
         """The components the configured strategy uses (only these are built, so a
@@ -210,9 +229,9 @@ class Planner(Record):
         evaluator = build(self.registry, "evaluator")
         relevance = build(self.registry, "relevance")
         if library is not None:
-            from strips_framework.macrops.search import MacroRelevance, MacroUse
+            from strips_framework.macrops.search import MacroRelevance
 
-            use = self.config.section(MacroUse, "macrops")
+            use = self.config.section("macrops")
             relevance = MacroRelevance.of(relevance, library, use)
         return strategy.search(
             problem,

@@ -143,7 +143,7 @@ def execute_command(planner: Planner, args: argparse.Namespace) -> int:
     if args.runs < 1:
         raise StripsError(f"--runs must be at least 1, got {args.runs}")
     problem = _problem(planner, args.files, 0, "execute")
-    faults: FaultModel = planner.config.section(FaultModel, "execution")
+    faults: FaultModel = planner.config.section("execution")
     library = read_library(args.macrops, problem) if args.macrops else Library()
 
     def replan(current: Problem):

@@ -31,6 +31,7 @@ from strips_framework.errors import InputError
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of
+from strips_framework.options import Configurable
 from strips_framework.user_files import read_text
 from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem, SourceSpan
 
@@ -466,8 +467,7 @@ class _Reader:
         return pre, lists
 
 
-@frozen
-class NativeLoader:
+class NativeLoader(Configurable):
     """Loads ``.strips`` files (see ``docs/problem-format.md``)."""
 
     name: ClassVar[str] = "native"

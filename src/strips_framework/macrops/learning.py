@@ -14,13 +14,12 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import ClassVar, Protocol
 
-from attrs import field, frozen, validators
-
 from strips_framework.macrops.elimination import eliminate
 from strips_framework.macrops.generalize import generalize
 from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import Step
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.problem import Problem
 
 
@@ -33,8 +32,7 @@ class MacroLearner(Protocol):
         ...
 
 
-@frozen
-class TriangleTableLearner:
+class TriangleTableLearner(Configurable):
     """The 1972 paper's learner: the plan's triangle table, generalized, as one MACROP.
 
     ``eliminate`` first drops the steps the plan can do without (a MACROP inherits every
@@ -45,9 +43,14 @@ class TriangleTableLearner:
 
     name: ClassVar[str] = "triangle-table"
     capabilities: ClassVar[frozenset[str]] = frozenset()
-    eliminate: bool = field(default=True, validator=validators.instance_of(bool))
-    min_steps: int = field(default=2, validator=[validators.instance_of(int), validators.ge(1)])
-    max_macrops: int = field(default=50, validator=[validators.instance_of(int), validators.ge(1)])
+    options = (
+        Option("eliminate", bool, True, doc="drop the steps the plan can do without first"),
+        Option("min_steps", int, 2, minimum=1, doc="shorter plans teach nothing"),
+        Option("max_macrops", int, 50, minimum=1, doc="the library's size (oldest dropped)"),
+    )
+    eliminate: bool
+    min_steps: int
+    max_macrops: int
 
     def learn(self, problem: Problem, plan: Sequence[Step], library: Library) -> tuple[Library, str]:
         steps = eliminate(problem, plan) if self.eliminate else list(plan)

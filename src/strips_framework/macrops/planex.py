@@ -26,21 +26,26 @@ from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.kernels import holds
 from strips_framework.macrops.proofs import MacroError
 from strips_framework.macrops.table import Step, TriangleTable
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.problem import Problem
 from strips_framework.worldmodel.simulate import Simulator, State
 
-_probability = [validators.instance_of(float), validators.ge(0.0), validators.le(1.0)]
-
-
-@frozen
-class FaultModel:
+class FaultModel(Configurable):
     """The ``[execution]`` table of the config."""
 
-    failure: float = field(default=0.1, validator=_probability)
-    disturbance: float = field(default=0.0, validator=_probability)
-    seed: int = field(default=0, validator=validators.instance_of(int))
-    max_steps: int = field(default=200, validator=[validators.instance_of(int), validators.ge(1)])
-    max_replans: int = field(default=10, validator=[validators.instance_of(int), validators.ge(0)])
+    options = (
+        Option("failure", float, 0.1, minimum=0, maximum=1, doc="chance that an action has no effect"),
+        Option("disturbance", float, 0.0, minimum=0, maximum=1,
+               doc="chance that the world changes after a step"),
+        Option("seed", int, 0, doc="the simulated world's random seed"),
+        Option("max_steps", int, 200, minimum=1, doc="steps executed at most"),
+        Option("max_replans", int, 10, minimum=0, doc="replans at most"),
+    )
+    failure: float
+    disturbance: float
+    seed: int
+    max_steps: int
+    max_replans: int
 
 
 @frozen

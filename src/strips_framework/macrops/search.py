@@ -29,6 +29,7 @@ from strips_framework.macrops.macrop import Library
 from strips_framework.macrops.table import TriangleTable
 from strips_framework.means_ends.components import ProblemRelevance, RelevanceFilter
 from strips_framework.means_ends.node import Difference, RelevantInstance
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.operators import OperatorInstance
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.simulate import State
@@ -95,8 +96,7 @@ class MacroInstance(OperatorInstance):
         return f"{self.schema.name}[{', '.join(map(str, self.steps()))}]"
 
 
-@frozen
-class MacroUse:
+class MacroUse(Configurable):
     """The ``[macrops]`` table of the config: how a search uses a library.
 
     A MACROP found relevant is offered in the instances (at most ``instances`` of them)
@@ -110,9 +110,14 @@ class MacroUse:
     runs out of time with it; see docs/macrops.md).
     """
 
-    instances: int = field(default=3, validator=[validators.instance_of(int), validators.ge(1)])
-    subgoals: bool = field(default=False, validator=validators.instance_of(bool))
-    effort: int = field(default=2000, validator=[validators.instance_of(int), validators.ge(1)])
+    options = (
+        Option("instances", int, 3, minimum=1, doc="instances offered per relevant MACROP"),
+        Option("subgoals", bool, False, doc="also offer MACROPs whose kernel does not hold"),
+        Option("effort", int, 2000, minimum=1, doc="kernel-clause matches per kernel looked for"),
+    )
+    instances: int
+    subgoals: bool
+    effort: int
 
 
 @frozen

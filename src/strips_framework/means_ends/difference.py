@@ -12,16 +12,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.capabilities import UNCOMPLETED_PROOF, Requirement
 from strips_framework.logic.clauses import Clause
 from strips_framework.means_ends.node import Difference
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.proving import ProofResult
 
 
-@frozen
-class UncompletedProofDifference:
+class UncompletedProofDifference(Configurable):
     """The negated goal and its descendants, smallest first, at most ``max_clauses``."""
 
     name: ClassVar[str] = "uncompleted-proof"
@@ -30,7 +28,11 @@ class UncompletedProofDifference:
         Requirement("prover", UNCOMPLETED_PROOF, "without it a difference is just the "
                     "negated goal", strict=False),
     )
-    max_clauses: int = field(default=60, validator=[validators.instance_of(int), validators.gt(0)])
+    options = (
+        Option("max_clauses", int, 60, minimum=0, exclusive_minimum=True,
+               doc="the difference's clauses kept, smallest first"),
+    )
+    max_clauses: int
 
     def extract(self, result: ProofResult, negated_goal: Sequence[Clause]) -> Difference:
         clauses = result.uncompleted or tuple(negated_goal)

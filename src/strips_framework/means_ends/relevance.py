@@ -27,6 +27,7 @@ from strips_framework.logic.formulas import Atomic, conjuncts
 from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
+from strips_framework.options import Configurable
 from strips_framework.worldmodel.operators import OperatorInstance, may_delete
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
@@ -36,8 +37,7 @@ from strips_framework.worldmodel.world import InitialModel, WorldModel
 _RENAMED = 1
 
 
-@frozen
-class AddListRelevance:
+class AddListRelevance(Configurable):
     """Relevant instances from resolving add-list atoms against difference clauses.
 
     An instance is dropped when a parameter that only its effects mention (not its

@@ -44,9 +44,9 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from strips_framework.errors import ConfigError, PluginError
+from strips_framework.errors import ConfigError, PluginError, did_you_mean
 from strips_framework.limits import Limits
-from strips_framework.options import OptionError, declared_options, type_words
+from strips_framework.options import Configurable, OptionError, declared_options, type_words
 from strips_framework.plugin.registry import KINDS, Registration, Registry
 from strips_framework.records import Record
 from strips_framework.user_files import KeyLines, read_toml_with_keys
@@ -73,6 +73,13 @@ DEFAULT_CHOICES = {kind: names[0] for kind, names in DEFAULTS.items()}
 #: model (``strips execute``, :mod:`strips_framework.macrops.planex`), ``[macrops]`` how a
 #: search uses a MACROP library (:class:`strips_framework.macrops.search.MacroUse`).
 SECTIONS = ("execution", "macrops")
+#: The class each of :data:`SECTIONS` is read into, ``(module, class)``: imported only when
+#: the config file writes the table, which is then checked at once (a typo in it is an
+#: error before anything runs, as in every other table).
+SECTION_CLASSES = {
+    "execution": ("strips_framework.macrops.planex", "FaultModel"),
+    "macrops": ("strips_framework.macrops.search", "MacroUse"),
+}
 #: The strategies PDDL input gets when the config names none, in order of preference (the
 #: first registered one): what Fast Downward's users expect of ``strips solve DOMAIN
 #: PROBLEM`` (lazy greedy search with hFF).
@@ -147,7 +154,8 @@ class Config(Record):
         for key in data:
             if key not in known:
                 raise ConfigError(
-                    f"{source.at(key)}: unknown key '{key}' (expected one of: {', '.join(known)})"
+                    f"{source.at(key)}: unknown key '{key}'{did_you_mean(key, known)} "
+                    f"(expected one of: {', '.join(known)})"
                 )
         choices = {}
         for kind in COMPONENTS:
@@ -178,6 +186,8 @@ class Config(Record):
             table = data.get(key, {})
             if not isinstance(table, dict):
                 raise ConfigError(f"{source.at(key)}: '{key}' must be a table, got {_type_name(table)}")
+            if key in data:
+                _instantiate(_section_class(key), table, key, source)
             sections[key] = table
         chosen = frozenset(kind for kind in COMPONENTS if kind in data)
         return cls(choices, limits, source, chosen, sections)
@@ -237,10 +247,10 @@ class Config(Record):
             )
         return "strategy"
 
-    def section(self, cls: type, key: str) -> Any:
-        """``cls`` built from the ``[key]`` table (one of :data:`SECTIONS`), with wrong keys
-        and values reported by key path."""
-        return _instantiate(cls, self.sections.get(key, {}), key, self.source)
+    def section(self, key: str) -> Any:
+        """The ``[key]`` table (one of :data:`SECTIONS`) built into its class, with wrong
+        keys and values reported by key path."""
+        return _instantiate(_section_class(key), self.sections.get(key, {}), key, self.source)
 
     def build(self, registry: Registry, kind: str) -> Any:
         """An instance of the implementation chosen for ``kind``, with its options."""
@@ -258,6 +268,13 @@ class Config(Record):
             if table not in self.chosen:  # a default: no key of the config file to point at
                 raise PluginError(f"no [{table}] chosen, and the default {error}") from None
             raise PluginError(f"{self.source.at(table + '.name')}: '{table}.name': {error}") from None
+
+
+def _section_class(key: str) -> type:
+    import importlib
+
+    module, name = SECTION_CLASSES[key]
+    return getattr(importlib.import_module(module), name)
 
 
 def default_name(registry: Registry, kinds: tuple[str, ...], preferred: tuple[str, ...]) -> str:
@@ -288,45 +305,14 @@ def _instantiate(
     for key in options:
         if key not in defaults:
             expected = ", ".join(sorted(defaults)) or "none"
+            if not issubclass(cls, Configurable):
+                expected += "; a class declares options by deriving from strips_framework.options.Configurable"
             raise ConfigError(
                 f"{source.at(path + '.' + key)}: unknown key '{path}.{key}': {what} has no "
-                f"option '{key}' "
-                f"(options: {expected})"
+                f"option '{key}'{did_you_mean(key, defaults)} (options: {expected})"
             )
-    for key, value in options.items():
-        if type(defaults[key]) is float and type(value) is int:
-            options = {**options, key: float(value)}
     try:
         return cls(**options)
-    except (TypeError, ValueError) as error:
-        key, explained = _explain(error, path, options)
-        where = source.at(f"{path}.{key}" if key else path)
-        raise ConfigError(f"{where}: bad value for {explained}") from None
-
-
-def _explain(
-    error: TypeError | ValueError, path: str, options: dict[str, Any]
-) -> tuple[str | None, str]:
-    """The key and ``'path.key': what was expected (got value)`` from a declared option's
-    :class:`~strips_framework.options.OptionError` or an attrs validator's error.
-
-    attrs' ``instance_of`` raises ``TypeError(message, attribute, expected_type, value)``
-    and ``in_`` ``ValueError(message, attribute, options, value)``; other validators raise
-    with a message naming the attribute in quotes.
-    """
-    if isinstance(error, OptionError):
-        return error.option, f"'{path}.{error.option}': {error.explanation}"
-    args = error.args
-    attribute = next((a for a in args if type(a).__name__ == "Attribute"), None)
-    key = attribute.name if attribute else next(
-        (k for k in options if f"'{k}'" in str(args[0])), None
-    )
-    where = f"'{path}.{key}'" if key else f"'{path}'"
-    if attribute is not None and len(args) == 4:
-        expected = args[2] if isinstance(args[2], tuple) else (args[2],)
-        if not all(isinstance(t, type) for t in expected):  # attrs' ``in_``: the values
-            values = ", ".join(repr(v) for v in expected)
-            return key, f"{where}: expected one of {values}, got {args[3]!r}"
-        return key, f"{where}: expected {type_words(expected)}, got {_type_name(args[3])} {args[3]!r}"
-    got = f" (got {options[key]!r})" if key in options else ""
-    return key, f"{where}: {args[0]}{got}"
+    except OptionError as error:  # the option system's own words, with the key path
+        where = source.at(f"{path}.{error.option}")
+        raise ConfigError(f"{where}: bad value for '{path}.{error.option}': {error.explanation}") from None

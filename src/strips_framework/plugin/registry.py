@@ -20,7 +20,7 @@ from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from strips_framework import options
-from strips_framework.errors import PluginError
+from strips_framework.errors import PluginError, did_you_mean
 from strips_framework.plugin import registry_cache
 
 if TYPE_CHECKING:
@@ -240,13 +240,11 @@ class Registry:
     def _not_registered(self, kind: str, name: str) -> str:
         """Why ``name`` cannot be had: what is registered instead, a close name, and
         whether the installed plugins were loaded at all."""
-        import difflib
-
         names = self.names(kind)
         message = f"{KINDS[kind][1]} {name!r} is not registered (available: {', '.join(names) or 'none'})"
-        close = difflib.get_close_matches(name, names, n=1)
+        close = did_you_mean(name, names)
         if close:
-            return f"{message}; did you mean {close[0]!r}?"
+            return message + close
         if os.environ.get(AUTOLOAD_SWITCH):
             from strips_framework.plugin import entry_points, hookspecs
 
