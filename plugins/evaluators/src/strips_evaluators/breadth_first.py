@@ -4,14 +4,12 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable
 
 
-@frozen
-class BreadthFirst:
+class BreadthFirst(Configurable):
     """Blind search: the score is the operators applied so far (g, with h = 0).
 
     With first-in-first-out tie-breaking this explores world models in order of plan length,

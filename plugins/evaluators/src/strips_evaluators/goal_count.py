@@ -4,15 +4,13 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_evaluators.features import subgoals, unproved_literals
 from strips_evaluators.options import weight
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable
 
 
-@frozen
-class GoalCount:
+class GoalCount(Configurable):
     """Goals left and unproved literals, plus ``cost_weight`` times the operators applied.
 
     Score = h + ``cost_weight`` * operators applied so far, where
@@ -32,7 +30,8 @@ class GoalCount:
     admissible: ClassVar[bool] = False
     capabilities: ClassVar[frozenset[str]] = frozenset()
 
-    cost_weight: float = weight(1.0)
+    options = (weight("cost_weight", 1.0, "times the operators applied so far"),)
+    cost_weight: float
 
     def evaluate(self, node: Node) -> float:
         return subgoals(node) + unproved_literals(node) + self.cost_weight * node.cost

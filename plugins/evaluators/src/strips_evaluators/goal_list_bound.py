@@ -4,15 +4,13 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_evaluators.features import subgoals
 from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable
 
 
-@frozen
-class GoalListBound:
+class GoalListBound(Configurable):
     """Admissible A* score: operators applied, plus one per goal left and unproved goal.
 
     Score = operators applied so far + h, where

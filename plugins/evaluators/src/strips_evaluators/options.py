@@ -1,9 +1,11 @@
-"""Validation of evaluator options, shared so every evaluator rejects bad weights alike.
+"""The evaluators' weight options, declared alike so every evaluator refuses bad weights
+alike.
 
 Options arrive from the TOML config as keyword arguments. A weight must be a finite,
 non-negative number: a negative weight would turn a penalty into a reward and silently
-invert the ordering the evaluator documents. Errors name the option in quotes and carry
-the attrs attribute, which is how the config reports them by key path.
+invert the ordering the evaluator documents. The checks are the core's option system's
+(:class:`strips_framework.options.Option`), so the config reports a refused value at its
+key with what was expected.
 """
 
 from __future__ import annotations
@@ -11,54 +13,26 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from types import MappingProxyType
-from typing import Any
 
-import attrs
-
-
-def check_weight(name: str, value: object, attribute: attrs.Attribute | None = None) -> None:
-    """Raise unless ``value`` is a finite number >= 0 (``bool`` is not a number here)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise TypeError(
-            f"'{name}' must be a number, not {type(value).__name__}", attribute, value
-        )
-    if not math.isfinite(value) or value < 0:
-        raise ValueError(f"'{name}' must be a finite number >= 0", attribute, value)
+from strips_framework.options import Option
 
 
-def _validate_weight(_instance: Any, attribute: attrs.Attribute, value: object) -> None:
-    check_weight(attribute.name, value, attribute)
+def weight(name: str, default: float, doc: str = "") -> Option:
+    """A non-negative, finite weight (an integer is taken as a float)."""
+    return Option(name, float, default, minimum=0, finite=True, doc=doc)
 
 
-def weight(default: float) -> Any:
-    """An attrs field for a non-negative weight."""
-    return attrs.field(default=default, validator=_validate_weight)
-
-
-def _read_only_table(value: object) -> object:
-    """A read-only copy of a mapping; anything else is left for the validator to reject."""
-    return MappingProxyType(dict(value)) if isinstance(value, Mapping) else value
-
-
-def _validate_table(_instance: Any, attribute: attrs.Attribute, value: object) -> None:
-    if not isinstance(value, Mapping):
-        raise TypeError(
-            f"'{attribute.name}' must map names to weights, not {type(value).__name__}",
-            attribute,
-            value,
-        )
+def _weights_expected(value: Mapping[object, object]) -> str | None:
     for key, entry in value.items():
         if not isinstance(key, str) or not key:
-            raise TypeError(f"'{attribute.name}' keys must be names, got {key!r}", attribute)
-        check_weight(f"{attribute.name}.{key}", entry, attribute)
+            return f"names as keys, not {key!r}"
+        number = isinstance(entry, (int, float)) and not isinstance(entry, bool)
+        if not number or not math.isfinite(entry) or entry < 0:  # type: ignore[operator]
+            return f"a finite number >= 0 for {key!r}, not {entry!r}"
+    return None
 
 
-def weight_table() -> Any:
-    """An attrs field for a ``{name: weight}`` table, stored read-only.
-
-    It takes no part in hashing: a mapping has no hash, and two evaluators that differ only
-    in this table still compare unequal.
-    """
-    return attrs.field(
-        factory=dict, converter=_read_only_table, validator=_validate_table, hash=False
-    )
+def weight_table(name: str, doc: str = "") -> Option:
+    """A ``{name: weight}`` table, stored read-only (empty by default)."""
+    return Option(name, dict, MappingProxyType({}), check=_weights_expected,
+                  convert=lambda table: MappingProxyType(dict(table)), doc=doc)

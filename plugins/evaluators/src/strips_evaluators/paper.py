@@ -5,17 +5,15 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_evaluators.features import subgoals, unproved_literals
 from strips_evaluators.options import weight, weight_table
 from strips_framework.logic.formulas import atoms_of
 from strips_framework.logic.terms import EQUALITY
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable
 
 
-@frozen
-class PaperEvaluator:
+class PaperEvaluator(Configurable):
     """STRIPS's own node ordering: a weighted sum of the factors the paper names.
 
     The paper lists the factors but publishes no weights. The score of a node is::
@@ -62,13 +60,22 @@ class PaperEvaluator:
     admissible: ClassVar[bool] = False
     capabilities: ClassVar[frozenset[str]] = frozenset()
 
-    goal_weight: float = weight(1.0)
-    predicate_weight: float = weight(0.5)
-    predicate_weights: Mapping[str, float] = weight_table()
-    difference_weight: float = weight(4.0)
-    cost_weight: float = weight(0.5)
-    successor_weight: float = weight(6.0)
-    pending_weight: float = weight(1.0)
+    options = (
+        weight("goal_weight", 1.0, "per goal on the list besides G0"),
+        weight("predicate_weight", 0.5, "per atom of those goals, unless the table names it"),
+        weight_table("predicate_weights", "per atom of a predicate, by predicate name"),
+        weight("difference_weight", 4.0, "per literal of the smallest difference clause"),
+        weight("cost_weight", 0.5, "per operator applied so far"),
+        weight("successor_weight", 6.0, "per successor the node has generated"),
+        weight("pending_weight", 1.0, "per literal left by the next relevant instance"),
+    )
+    goal_weight: float
+    predicate_weight: float
+    predicate_weights: Mapping[str, float]
+    difference_weight: float
+    cost_weight: float
+    successor_weight: float
+    pending_weight: float
 
     def evaluate(self, node: Node) -> float:
         pending = len(node.pending[0].resolvent.literals) if node.pending else 0

@@ -23,12 +23,13 @@ from collections import ChainMap, OrderedDict, defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from typing import ClassVar
 
-from attrs import define, field, frozen, validators
+from attrs import define, field, frozen
 
 from strips_evaluators.options import weight
 from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
@@ -41,8 +42,7 @@ MAX_BINDINGS = 200
 MODELS_KEPT = 256
 
 
-@frozen
-class RelaxedPlanEvaluator:
+class RelaxedPlanEvaluator(Configurable):
     """Greedy best-first on a relaxed plan: ``h + cost_weight * operators applied``.
 
     h = the operators still on the goal list (each is applied once its precondition is
@@ -65,9 +65,15 @@ class RelaxedPlanEvaluator:
     admissible: ClassVar[bool] = False
     capabilities: ClassVar[frozenset[str]] = frozenset()
 
-    estimate: str = field(default="ff", validator=validators.in_(("ff", "add")))
-    cost_weight: float = weight(0.5)
-    successor_weight: float = weight(1.0)
+    options = (
+        Option("estimate", str, "ff", choices=("ff", "add"),
+               doc="the relaxed cost: an FF relaxed plan's size, or the hadd sum"),
+        weight("cost_weight", 0.5, "per operator applied so far"),
+        weight("successor_weight", 1.0, "per successor the node has generated"),
+    )
+    estimate: str
+    cost_weight: float
+    successor_weight: float
 
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel
