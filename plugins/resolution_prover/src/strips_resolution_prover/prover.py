@@ -23,8 +23,7 @@ from collections.abc import Set as AbstractSet
 from itertools import chain
 from typing import ClassVar
 
-from attrs import define, evolve, field
-from attrs.validators import ge, in_, instance_of, optional
+from attrs import evolve
 
 from strips_framework.capabilities import (
     ANSWERS,
@@ -35,6 +34,7 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
     PROVED,
@@ -93,8 +93,7 @@ GOAL_SELECTIONS = ("every", "fewest", "fewest-shared")
 MATCH_STEPS_PER_GIVEN = 1000
 
 
-@define(frozen=True)
-class ResolutionProver:
+class ResolutionProver(Configurable):
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
     Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
@@ -122,16 +121,27 @@ class ResolutionProver:
         {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
     )
 
-    pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
-    unit_preference: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
-    set_of_support: bool = field(default=True, validator=instance_of(bool))
-    max_weight: int | None = field(default=120, validator=optional([instance_of(int), ge(1)]))
-    max_clause_literals: int | None = field(
-        default=None, validator=optional([instance_of(int), ge(1)])
+    options = (
+        Option("pick_given_ratio", int, 5, minimum=1, doc="weight-queue picks per age-queue pick"),
+        Option("unit_preference", int, None, minimum=0, optional=True,
+               doc="weight-queue penalty per literal beyond the first (unset: by the task)"),
+        Option("set_of_support", bool, True, doc="resolve axioms only with goal descendants"),
+        Option("max_weight", int, 120, minimum=1, optional=True, doc="heavier conclusions dropped"),
+        Option("max_clause_literals", int, None, minimum=1, optional=True,
+               doc="longer conclusions dropped"),
+        Option("max_term_depth", int, None, minimum=0, optional=True, doc="deeper conclusions dropped"),
+        Option("schedule", bool, True, doc="pick the calculus from the task's features"),
+        Option("goal_selection", str, "every", choices=GOAL_SELECTIONS,
+               doc="the goal literals resolved upon (SLD on Horn tasks: 'fewest')"),
     )
-    max_term_depth: int | None = field(default=None, validator=optional([instance_of(int), ge(0)]))
-    schedule: bool = field(default=True, validator=instance_of(bool))
-    goal_selection: str = field(default="every", validator=in_(GOAL_SELECTIONS))
+    pick_given_ratio: int
+    unit_preference: int | None
+    set_of_support: bool
+    max_weight: int | None
+    max_clause_literals: int | None
+    max_term_depth: int | None
+    schedule: bool
+    goal_selection: str
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` within ``task.effort`` given clauses."""
@@ -301,7 +311,7 @@ class ResolutionSession:
         self.fact_count = sum(self.facts) if self.facts is not None else 0
         self.calculus = options
         if self.facts is not None:
-            self.calculus = evolve(options, schedule=False, set_of_support=True)
+            self.calculus = options._replace(schedule=False, set_of_support=True)
         self.axioms = _Axioms(self.calculus, initial, unique_names)
         #: No axioms of its own: the base of an attempt that takes its axioms afresh.
         self.none = _Axioms(self.calculus, InitialModel(()), unique_names, fresh=True)
@@ -375,8 +385,8 @@ def _attempt(options: ResolutionProver, task: ProofTask) -> _Saturation:
 
 def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResult:
     """``task`` under the calculus :func:`.auto.plan` picks (see :mod:`.auto`)."""
-    sos = evolve(prover, schedule=False, set_of_support=True)
-    saturate = evolve(prover, schedule=False, set_of_support=False)
+    sos = prover._replace(schedule=False, set_of_support=True)
+    saturate = prover._replace(schedule=False, set_of_support=False)
     chosen = plan(task.axioms, task.negated_goal)
     if chosen == "set-of-support":
         return sos.prove(task)

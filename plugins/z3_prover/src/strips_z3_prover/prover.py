@@ -13,9 +13,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import ClassVar
 
-from attrs import define, field
-from attrs.validators import ge, instance_of
-
 from strips_framework.capabilities import (
     ANSWERS,
     EFFORT_BOUND,
@@ -25,6 +22,7 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.proving import PROVED, ProofResult, ProofTask
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_z3_prover.budget import Budget
@@ -36,8 +34,7 @@ from strips_z3_prover.residuals import uncompleted_proof
 from strips_z3_prover.session import PLACEHOLDER, GroundSession
 
 
-@define(frozen=True)
-class Z3Prover:
+class Z3Prover(Configurable):
     """Z3 with ground instances where the model allows, quantifiers otherwise.
 
     Options: ``rlimit_per_effort`` is the scale of the effort bound: an attempt may use
@@ -59,11 +56,19 @@ class Z3Prover:
         {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
     )
 
-    rlimit_per_effort: int = field(default=1000, validator=[instance_of(int), ge(1)])
-    incremental: bool = field(default=True, validator=instance_of(bool))
-    max_ground_instances: int = field(default=200_000, validator=[instance_of(int), ge(0)])
-    seed: int = field(default=0, validator=[instance_of(int), ge(0)])
-    max_residuals: int = field(default=200, validator=[instance_of(int), ge(1)])
+    options = (
+        Option("rlimit_per_effort", int, 1000, minimum=1, doc="Z3 resource units per unit of effort"),
+        Option("incremental", bool, True, doc="one solver for all the world models of a session"),
+        Option("max_ground_instances", int, 200_000, minimum=0,
+               doc="ground instances per task before quantifiers are used instead"),
+        Option("seed", int, 0, minimum=0, doc="Z3's random seed"),
+        Option("max_residuals", int, 200, minimum=1, doc="the uncompleted proof's clauses at most"),
+    )
+    rlimit_per_effort: int
+    incremental: bool
+    max_ground_instances: int
+    seed: int
+    max_residuals: int
 
     def prove(self, task: ProofTask) -> ProofResult:
         """Refute ``task.axioms`` ∪ ``task.negated_goal`` for some parameter instance."""
