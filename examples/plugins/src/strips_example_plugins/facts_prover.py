@@ -14,18 +14,16 @@ from collections import defaultdict
 from collections.abc import Iterator
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.capabilities import ANSWERS, COMPLETE, SOUND, UNCOMPLETED_PROOF
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term, is_ground
+from strips_framework.options import Configurable
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofResult, ProofTask
 
 Binding = dict[int | Param, Term]
 
 
-@frozen
-class FactsProver:
+class FactsProver(Configurable):
     """Answers conjunctive goals by fact lookup (ground facts only, no axioms)."""
 
     name: ClassVar[str] = "facts"

@@ -4,14 +4,12 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import field, frozen, validators
-
 from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable, Option
 
 
-@frozen
-class GoalsLeft:
+class GoalsLeft(Configurable):
     """Operators applied plus goals left above G0, ties broken towards deeper nodes.
 
     Each goal above G0 is the precondition of an operator the plan must still apply, so
@@ -24,10 +22,11 @@ class GoalsLeft:
     capabilities: ClassVar[frozenset[str]] = frozenset({ADMISSIBLE})
     admissible: ClassVar[bool] = True
 
-    tie_break: float = field(
-        default=0.01,
-        validator=[validators.instance_of(float), validators.ge(0.0), validators.lt(1.0)],
+    options = (
+        Option("tie_break", float, 0.01, minimum=0, check=lambda v: None if v < 1 else "a value < 1",
+               doc="subtracted per goal, to prefer deeper nodes among equals"),
     )
+    tie_break: float
 
     def evaluate(self, node: Node) -> float:
         goals_left = len(node.goals) - 1
