@@ -86,7 +86,8 @@ class CountingEstimator:
         return self.progress.note(self.inner.estimate(state))
 
     def estimate_with_preferred(self, state: int) -> tuple[float, Sequence[int]]:
-        value, preferred = self.inner.estimate_with_preferred(state)
+        method = getattr(self.inner, "estimate_with_preferred", None)  # optional
+        value, preferred = method(state) if method is not None else (self.inner.estimate(state), ())
         return self.progress.note(value), preferred
 
 

@@ -153,3 +153,10 @@ def test_shared_ipc_task(task):
     with OneshotPlanner(name="strips") as planner:
         result = planner.solve(problem, timeout=60)
     assert result.status == UpStatus.SOLVED_SATISFICING and _valid(problem, result.plan)
+
+
+def test_every_status_has_a_unified_planning_status():
+    from strips_framework.result import Status
+    from up_strips.engine import STATUS
+
+    assert set(STATUS) == set(Status)

@@ -18,6 +18,7 @@ from strips_framework.cli import report
 from strips_framework.cli import macrops as macrop_command
 from strips_framework.errors import StripsError
 from strips_framework.limits import Clock, LimitReached
+from strips_framework.options import declared
 from strips_framework.pddl.files import is_pddl
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Choice, Config
@@ -291,8 +292,9 @@ def _plugins(registry: Registry) -> int:
                 print(f"      {doc[0]}")
             for line in _capability_lines(registration):
                 print(f"      {line}")
-            for name, default in registration.options():
-                print(f"      {name} = {default!r}")
+            for option in declared(registration.cls):
+                doc = f"  # {option.doc}" if option.doc else ""
+                print(f"      {option.name} = {option.default!r}{doc}")
     return 0
 
 

@@ -8,7 +8,7 @@ instantiated once per run from the config. The world-model kinds are in
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, ClassVar, Protocol
 
 if TYPE_CHECKING:
@@ -18,16 +18,38 @@ if TYPE_CHECKING:
 
 
 class StateEstimator(Protocol):
-    """A heuristic bound to one ground task; called for every state the search meets."""
+    """A heuristic bound to one ground task; called for every state the search meets.
+
+    ``estimate`` is all an estimator must have. One that proposes preferred operators
+    also has ``estimate_with_preferred`` (:class:`PreferredEstimator`); the searches
+    reach it through :func:`with_preferred`, which gives an estimator without it none."""
 
     def estimate(self, state: int) -> float:
         """The estimated cost from ``state`` to the goal; ``math.inf`` for a dead end."""
         ...
 
+
+class PreferredEstimator(StateEstimator, Protocol):
+    """An estimator that also proposes preferred operators."""
+
     def estimate_with_preferred(self, state: int) -> tuple[float, Sequence[int]]:
         """The estimate and the preferred operators (indices into ``task.operators``,
-        applicable in ``state``); heuristics without them return an empty sequence."""
+        applicable in ``state``)."""
         ...
+
+
+def with_preferred(estimator: StateEstimator) -> Callable[[int], tuple[float, Sequence[int]]]:
+    """``estimator.estimate_with_preferred``, or, for an estimator without that optional
+    method, its ``estimate`` with no preferred operators."""
+    method = getattr(estimator, "estimate_with_preferred", None)
+    if method is not None:
+        return method
+    estimate = estimator.estimate
+
+    def without_preferred(state: int) -> tuple[float, Sequence[int]]:
+        return estimate(state), ()
+
+    return without_preferred
 
 
 class StateHeuristic(Protocol):

@@ -20,6 +20,7 @@ from typing import ClassVar
 from strips_framework.capabilities import ADMISSIBLE_HEURISTIC, OPTIMAL, Requirement
 from strips_framework.compiled import compiled_module
 from strips_framework.forward.base import ForwardStrategy, SearchRun
+from strips_framework.forward.components import with_preferred
 from strips_framework.forward.openlists import open_list
 from strips_framework.forward.space import NO_PARENT
 from strips_framework.options import Option
@@ -39,7 +40,7 @@ class EagerSearch(ForwardStrategy):
         module = compiled_module("strips_framework.forward._search")
         if module is None:
             return self.reference_run(run)
-        preferred_of = run.estimator.estimate_with_preferred if self.preferred else None
+        preferred_of = with_preferred(run.estimator) if self.preferred else None
         return module.eager(
             run, run.estimator.estimate, preferred_of, self.key, self.reopen, self.boost
         )
@@ -48,7 +49,7 @@ class EagerSearch(ForwardStrategy):
         """The search in Python (the compiled loop's reference)."""
         task, space, budget = run.task, run.space, run.budget
         estimate = run.estimator.estimate
-        preferred_of = run.estimator.estimate_with_preferred if self.preferred else None
+        preferred_of = with_preferred(run.estimator) if self.preferred else None
         applicable, successor = space.successors.applicable, space.successor
         ids, states, costs, goal = space.ids, space.states, space.costs, task.goal_mask
         key, reopen = self.key, self.reopen

@@ -18,6 +18,7 @@ from collections.abc import Sequence
 from typing import ClassVar
 
 from strips_framework.forward.base import ForwardStrategy, SearchRun
+from strips_framework.forward.components import with_preferred
 from strips_framework.forward.space import NO_PARENT
 from strips_framework.options import Option
 
@@ -34,7 +35,7 @@ class EnforcedHillClimbing(ForwardStrategy):
 
     def run(self, run: SearchRun) -> int | None:
         task, space, budget = run.task, run.space, run.budget
-        evaluate = run.estimator.estimate_with_preferred
+        evaluate = with_preferred(run.estimator)
         applicable, successor = space.successors.applicable, space.successor
         ids, states, goal = space.ids, space.states, task.goal_mask
         current = space.add(task.init, NO_PARENT, NO_PARENT)

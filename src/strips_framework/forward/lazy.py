@@ -21,6 +21,7 @@ from typing import ClassVar
 
 from strips_framework.compiled import compiled_module
 from strips_framework.forward.base import ForwardStrategy, SearchRun
+from strips_framework.forward.components import with_preferred
 from strips_framework.forward.openlists import open_list
 from strips_framework.forward.space import NO_PARENT
 from strips_framework.options import Option
@@ -47,7 +48,7 @@ class LazyGreedySearch(ForwardStrategy):
     def _evaluator(self, run: SearchRun) -> Callable[[int], tuple[float, Sequence[int]]]:
         """h and the preferred operators of a state (none unless ``preferred``)."""
         if self.preferred:
-            return run.estimator.estimate_with_preferred
+            return with_preferred(run.estimator)
         estimate = run.estimator.estimate
 
         def evaluate(state: int) -> tuple[float, tuple[int, ...]]:

@@ -62,10 +62,12 @@ def strips_register_difference_extractors() -> list[type[DifferenceExtractor]]:
 def strips_register_relevance_filters() -> list[type[RelevanceFilter]]:
     """Return operator-relevance classes.
 
-    A relevance filter receives a difference and the operator schemata and returns the
-    relevant operator instances, best first: the candidates whose add lists mention the
-    difference's predicates, instantiated by resolving add-list clauses against difference
-    clauses (paper, III.C).
+    A relevance filter's ``for_problem(operators, initial)`` indexes one problem's
+    operator schemata and M0 once per search; the :class:`~strips_framework.means_ends.components.ProblemRelevance` it returns is
+    asked ``relevant(difference, model)`` at every node and returns the relevant operator
+    instances, best first: the candidates whose add lists mention the difference's
+    predicates, instantiated by resolving add-list clauses against difference clauses
+    (paper, III.C).
     """
 
 
@@ -115,8 +117,9 @@ def strips_register_heuristics() -> list[type[StateHeuristic]]:
     :mod:`strips_framework.grounding.task`), the cost still needed to reach the goal;
     forward strategies (A*, greedy best-first, hill-climbing) use it. ``for_task`` is
     called once per task and does the precomputation; the estimator it returns is called
-    for every state. A heuristic that never overestimates sets ``admissible = True``; one
-    that also proposes *preferred operators* implements ``estimate_with_preferred``.
+    for every state: it must have ``estimate``, and may have ``estimate_with_preferred``
+    when it proposes *preferred operators* (an estimator without it proposes none). A
+    heuristic that never overestimates sets ``admissible = True``.
     """
 
 

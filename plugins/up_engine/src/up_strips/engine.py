@@ -49,6 +49,8 @@ STATUS = {
     Status.EXPANSION_LIMIT: Status_.UNSOLVABLE_INCOMPLETELY,
     Status.TIME_LIMIT: Status_.TIMEOUT,
     Status.MEMORY_LIMIT: Status_.MEMOUT,
+    # UP has no word for a run stopped by the user: no plan, nothing proved.
+    Status.INTERRUPTED: Status_.UNSOLVABLE_INCOMPLETELY,
 }
 
 #: The config tables a param may name directly (``params={"heuristic": "lmcut"}``).
