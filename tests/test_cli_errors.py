@@ -204,3 +204,39 @@ def test_an_unknown_strategy_names_the_config_and_key(tmp_path, capsys):
     assert capsys.readouterr().err.startswith(
         f"strips: error: {config}:2: 'strategy.name': search strategy 'modl-astar' is not registered"
     )
+
+
+def _unwritable(tmp_path: Path) -> Path:
+    """A path in a folder that cannot be written: /proc for root (who may write anywhere
+    else), a read-only folder otherwise."""
+    if os.geteuid() == 0:
+        return Path("/proc/strips-out")
+    folder = tmp_path / "read-only"
+    folder.mkdir()
+    folder.chmod(0o555)
+    return folder / "out"
+
+
+@pytest.mark.parametrize("command", [
+    ["solve", str(THREE_BOXES), "--plan-file", "{out}"],
+    ["solve", str(THREE_BOXES), "--tree", "{out}"],
+    ["learn", str(ROOT / "examples" / "robot-world" / "light.strips"), "-o", "{out}"],
+    ["table", str(THREE_BOXES), "{plan}", "--svg", "{out}"],
+    ["table", str(THREE_BOXES), "{plan}", "--html", "{out}"],
+    ["bench", str(THREE_BOXES), "--no-progress", "-o", "{out}/results.jsonl"],
+], ids=["plan-file", "tree", "learn", "svg", "html", "bench"])
+def test_an_output_that_cannot_be_written_is_one_line_not_a_traceback(tmp_path, capsys, command):
+    out = _unwritable(tmp_path)
+    plan = tmp_path / "boxes.plan"
+    assert main(["solve", str(THREE_BOXES), "--plan-file", str(plan)]) == 0
+    capsys.readouterr()
+    argv = [arg.format(out=out, plan=plan) for arg in command]
+    assert main(argv) == exit_codes.INPUT_ERROR
+    err = capsys.readouterr().err
+    assert err.startswith(f"strips: error: {out}") and err.count("\n") == 1, err
+
+
+@pytest.mark.parametrize("files", [["{dir}"], [str(ROOT / "examples/pddl/blocksworld/domain.pddl"), "{dir}"]])
+def test_a_folder_given_as_the_problem_says_so(tmp_path, capsys, files):
+    assert main(["solve", *(f.format(dir=tmp_path) for f in files)]) == exit_codes.INPUT_ERROR
+    assert "is a folder, not" in capsys.readouterr().err

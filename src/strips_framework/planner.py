@@ -23,7 +23,7 @@ from strips_framework.plugin.checks import check_combination, check_problem
 from strips_framework.plugin.config import Config
 from strips_framework.plugin.registry import KINDS, Registry
 from strips_framework.records import Record
-from strips_framework.user_files import is_file
+from strips_framework.user_files import is_dir, is_file
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
@@ -143,7 +143,8 @@ class Planner(Record):
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
         if not is_file(path):
-            raise InputError(str(path), None, None, "no such problem file")
+            what = "is a folder, not a problem file" if is_dir(path) else "no such problem file"
+            raise InputError(str(path), None, None, what)
         loader = self.registry.loader_for(path.suffix).cls()
         return loader.load(path)
 

@@ -41,6 +41,8 @@ def read_text(path: Path, what: str = "the file") -> str:
     """The file's text, decoded as UTF-8; a bad byte is reported at its line and column."""
     try:
         data = path.read_bytes()
+    except IsADirectoryError:
+        raise InputError(str(path), None, None, f"is a folder, not {what}") from None
     except (OSError, ValueError) as error:
         reason = getattr(error, "strerror", None) or str(error)
         raise InputError(str(path), None, None, f"cannot read {what}: {reason}") from None
@@ -189,28 +191,35 @@ def check_writable(path: Path, what: str) -> None:
     except (OSError, ValueError):
         ok = False
     if not ok:
-        reason = "is a folder" if _is_dir(path) else f"cannot write into {folder}"
+        reason = "is a folder" if is_dir(path) else f"cannot write into {folder}"
         raise InputError(str(path), None, None, f"cannot write {what}: {reason}")
 
 
-def _is_dir(path: Path) -> bool:
+def is_dir(path: Path) -> bool:
     try:
         return path.is_dir()
     except (OSError, ValueError):
         return False
 
 
-def write_atomically(path: Path, text: str) -> None:
+def write_atomically(path: Path, text: str, what: str = "the file") -> None:
     """Write ``text`` to ``path`` through a temporary file in the same folder, renamed over
-    it: a reader (or an interrupted run) sees the old file or the new one, never half."""
+    it: a reader (or an interrupted run) sees the old file or the new one, never half. A
+    path that cannot be written (no such folder, no permission, a folder, ``/proc``) is an
+    :class:`InputError` naming it and ``what`` it was for."""
     import tempfile  # with random, shutil, bz2, lzma: only runs that write a file pay
 
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    except OSError as error:
+        raise InputError(str(path), None, None, f"cannot write {what}: {error.strerror}") from None
     try:
         with os.fdopen(handle, "w", encoding="utf-8") as file:
             file.write(text)
         os.replace(temporary, path)
-    except BaseException:
+    except BaseException as error:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(temporary)
+        if isinstance(error, OSError):
+            raise InputError(str(path), None, None, f"cannot write {what}: {error.strerror}") from None
         raise

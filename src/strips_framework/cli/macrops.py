@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 from strips_framework import exit_codes
 from strips_framework.errors import InputError, StripsError
+from strips_framework.user_files import write_atomically
 
 if TYPE_CHECKING:
     from strips_framework.planner import Planner
@@ -126,9 +127,9 @@ def table(planner: Planner, args: argparse.Namespace) -> int:
         raise StripsError(f"--kernel must be between 1 and {drawn.size + 1}")
     print(text_table(drawn, title), end="")
     if args.svg:
-        args.svg.write_text(svg_table(drawn, title, args.kernel), encoding="utf-8")
+        write_atomically(args.svg, svg_table(drawn, title, args.kernel), "the SVG table")
     if args.html:
-        args.html.write_text(html_table(drawn, title, args.kernel), encoding="utf-8")
+        write_atomically(args.html, html_table(drawn, title, args.kernel), "the HTML table")
     return exit_codes.SOLVED
 
 

@@ -157,6 +157,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     except BrokenPipeError:  # `strips plugins | head`: the reader has what it wanted
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no error at exit
         return exit_codes.SOLVED
+    except OSError as error:
+        if error.filename is None:
+            raise
+        # A file the user named could not be read or written (a folder, no permission,
+        # a full disk): the file and the reason, as for every other bad input.
+        print(f"strips: error: {error.filename}: {error.strerror}", file=sys.stderr)
+        return exit_codes.INPUT_ERROR
     except Exception as error:
         culprit = planner.registry.raised_in(error) if planner is not None else None
         if culprit is None:
@@ -241,11 +248,12 @@ def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> Non
         else:
             from strips_framework.cli.tree_dot import search_tree_to_dot
 
-            write_atomically(args.tree, search_tree_to_dot(result.tree, f"{problem.stem}: search tree"))
+            dot = search_tree_to_dot(result.tree, f"{problem.stem}: search tree")
+            write_atomically(args.tree, dot, "the search tree")
     if args.plan_file and result.plan is not None and result.cost is not None:
         from strips_framework.formats.ipc import plan_text  # only --plan-file needs it
 
-        write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs))
+        write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs), "the plan")
 
 
 def _prove(planner: Planner, args: argparse.Namespace) -> int:

@@ -38,6 +38,7 @@ from strips_framework.logic.parser import WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, Term, atom_to_str, term_to_str
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import Cell, Distinct, Step, TriangleTable
+from strips_framework.user_files import write_atomically
 from strips_framework.worldmodel.problem import OperatorSchema, Problem
 
 HEADER = "# MACROP library (Fikes, Hart & Nilsson 1972): written by 'strips learn'"
@@ -89,7 +90,7 @@ def _macrop_lines(macrop: Macrop) -> list[str]:
 
 
 def write_library(path: Path, library: Library, world: str) -> None:
-    path.write_text(library_text(library, world), encoding="utf-8")
+    write_atomically(path, library_text(library, world), "the library")
 
 
 def read_library(path: Path, problem: Problem) -> Library:

@@ -26,6 +26,8 @@ def _source(path: Path) -> Source:
     name does)."""
     try:
         text = path.read_bytes().decode("utf-8", errors="replace")
+    except IsADirectoryError:
+        raise InputError(str(path), None, None, "is a folder, not a PDDL file") from None
     except (OSError, ValueError) as error:  # ValueError: a NUL byte in the name
         reason = getattr(error, "strerror", None) or str(error)
         raise InputError(str(path), None, None, f"cannot read the file: {reason}") from None
