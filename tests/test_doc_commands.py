@@ -135,6 +135,11 @@ def test_command_runs_and_keeps_its_claims(command: str, setup: tuple[str, ...],
     claim = re.search(r"#.*?(\d+) steps", command)
     if claim:  # "# A*: 4 steps"
         assert f"; plan length: {claim.group(1)}" in done.stdout.splitlines()
+    nodes = re.search(r"#.*?(\d+) nodes instead of (\d+)", command)
+    if nodes:  # "--macrops robot.lib  # 90 nodes instead of 153": with the library, then without
+        assert f"; nodes: {nodes.group(1)} in the tree" in done.stdout, done.stdout
+        alone = _run(re.sub(r"--macrops \S+", "", command), tmp_path)
+        assert f"; nodes: {nodes.group(2)} in the tree" in alone.stdout, alone.stdout
     for written in re.findall(r"--plan-file (\S+)", command):
         assert (tmp_path / written).read_text().splitlines()[-1].startswith("; cost = ")
 

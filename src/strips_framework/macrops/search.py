@@ -106,8 +106,9 @@ class MacroUse(Configurable):
     With ``subgoals`` one whose kernel does not hold is also offered, after the operators,
     with its precondition as the subgoal (the 1972 paper's full use). That costs dearly
     here: a kernel is a conjunction of many clauses, and a failed proof of it leaves a
-    large difference (the five-part robot goal, which takes 124 nodes with the default,
-    runs out of time with it; see docs/macrops.md).
+    large difference (the five-part robot goal, which the default solves in fewer nodes
+    with the robot library than without it, README, runs out of time with it; see
+    docs/macrops.md).
     """
 
     options = (
