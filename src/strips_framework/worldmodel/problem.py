@@ -78,6 +78,19 @@ class Problem:
     unique_names: bool = True
     source: str = field(default="<memory>", eq=False)
 
+    def __attrs_post_init__(self) -> None:
+        """Refuse a fact naming a constant the problem does not declare: a problem built
+        in code with a typo (``("AT", "ROBOT", "e ")``) would otherwise be a different
+        problem than meant, silently (the native and PDDL readers report it at its line)."""
+        declared = set(self.constants)
+        for fact in self.facts:
+            for term in fact[1:]:
+                if isinstance(term, str) and term not in declared:
+                    raise ValueError(
+                        f"{self.source}: fact {fact!r} names the constant {term!r}, which is "
+                        f"not among the problem's constants"
+                    )
+
     def operator(self, name: str) -> OperatorSchema:
         for schema in self.operators:
             if schema.name == name:
