@@ -23,6 +23,7 @@ import pytest
 from differential import CONSTANTS, EFFORT, atom, compare, provers, tasks
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from shared_bench import shared_bench
 from strips_eprover_prover.binary import find_binary
 from strips_z3_prover import Z3Prover
 
@@ -110,7 +111,7 @@ def test_report_differential_counts() -> None:
 # -- E prover on TPTP ------------------------------------------------------------------
 
 EPROVER = find_binary()
-TPTP = Path(__file__).resolve().parents[2] / "shared" / "bench" / "tptp" / "dev"  # ../shared
+TPTP = (shared_bench("tptp") or Path("/nonexistent")) / "dev"  # ../shared, or the repository's copy
 E_STATUS = {
     "Theorem": PROVED,
     "Unsatisfiable": PROVED,
@@ -140,7 +141,7 @@ def _e_status(path: Path) -> str:
 
 
 @pytest.mark.skipif(
-    EPROVER is None or not TPTP.is_dir(), reason="no E binary, or no TPTP set (../shared)"
+    EPROVER is None or not TPTP.is_dir(), reason="no E binary"
 )
 @pytest.mark.parametrize("path", sorted(TPTP.glob("*.p")), ids=lambda p: p.stem)
 def test_z3_resolution_and_e_agree_on_tptp(path: Path) -> None:

@@ -1,6 +1,7 @@
 """The TPTP development set: every status we report must be right, and none solved is lost.
 
-The set lives in ``shared/bench/tptp`` beside the repository; without it these tests skip.
+The set lives in ``shared/bench/tptp`` beside the repository, and a copy in
+``tests/data/bench/tptp`` (``benchmarks/shared_bench.py``).
 Each problem runs under a fixed effort bound (given clauses), not a time limit, so the
 outcome is the same on every machine.
 """
@@ -11,6 +12,7 @@ import json
 from pathlib import Path
 
 import pytest
+from shared_bench import shared_bench
 
 from strips_framework.formats.tptp import load_tptp, prove_tptp, szs_answers, szs_status
 from strips_framework.logic.clauses import Clause
@@ -52,15 +54,7 @@ ANSWERED = {
 }  # fmt: skip
 
 
-def _find_bench() -> Path | None:
-    for parent in Path(__file__).resolve().parents:
-        candidate = parent / "shared" / "bench" / "tptp"
-        if candidate.is_dir():
-            return candidate
-    return None
-
-
-BENCH = _find_bench()
+BENCH = shared_bench("tptp")
 needs_bench = pytest.mark.skipif(BENCH is None, reason="shared/bench/tptp not found")
 
 

@@ -13,6 +13,7 @@ from unified_planning.engines import PlanGenerationResultStatus as UpStatus
 from unified_planning.engines import ValidationResultStatus
 from unified_planning.exceptions import UPUsageError
 from unified_planning.io import PDDLReader
+from shared_bench import shared_bench
 from unified_planning.shortcuts import OneshotPlanner, PlanValidator, get_environment
 
 import up_strips
@@ -27,10 +28,7 @@ get_environment().credits_stream = None
 
 
 def _shared_ipc() -> Path | None:
-    for parent in ROOT.parents:
-        if (parent / "shared" / "bench" / "ipc").is_dir():
-            return parent / "shared" / "bench" / "ipc"
-    return None
+    return shared_bench("ipc")  # ../shared, or the repository's copy of part of it
 
 
 def _builtin_cases(module: str) -> dict[str, object]:
