@@ -240,3 +240,15 @@ def test_an_output_that_cannot_be_written_is_one_line_not_a_traceback(tmp_path, 
 def test_a_folder_given_as_the_problem_says_so(tmp_path, capsys, files):
     assert main(["solve", *(f.format(dir=tmp_path) for f in files)]) == exit_codes.INPUT_ERROR
     assert "is a folder, not" in capsys.readouterr().err
+
+
+def test_bench_without_its_extra_says_how_to_get_it(monkeypatch, capsys):
+    """rich and tomli-w are the bench extra's, not the core's dependencies."""
+    import importlib.util
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: None if name == "rich" else real(name, *a))
+    assert main(["bench", str(THREE_BOXES), "--no-progress"]) == exit_codes.INPUT_ERROR
+    assert capsys.readouterr().err == (
+        "strips: error: strips bench needs rich: pip install 'strips-framework[bench]'\n"
+    )

@@ -62,7 +62,20 @@ def report_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _require_bench_extra() -> None:
+    """``strips bench`` needs the ``bench`` extra's libraries (rich, tomli-w), which the
+    core does not depend on: without them, one line saying how to get them."""
+    import importlib.util
+
+    missing = [name for name in ("rich", "tomli_w") if importlib.util.find_spec(name) is None]
+    if missing:
+        raise StripsError(
+            f"strips bench needs {', '.join(missing)}: pip install 'strips-framework[bench]'"
+        )
+
+
 def bench(args: argparse.Namespace) -> int:
+    _require_bench_extra()
     # Imported here, not at the top: every run's child is a `strips solve`, and its
     # start-up should not pay for the progress bar and the executors.
     from strips_framework.bench.executors import DaskExecutor, LocalExecutor, run_matrix
