@@ -70,8 +70,3 @@ def clause_to_str(clause: Clause) -> str:
         text += f"  [{bound}]"
     return text
 
-
-def predicate_key(literal: Literal) -> tuple[bool, str, int]:
-    """``(positive, predicate, arity)``: the index key under which partners are looked up."""
-    positive, atom = literal
-    return positive, atom[0], len(atom) - 1

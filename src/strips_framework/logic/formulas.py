@@ -113,11 +113,6 @@ def atoms_of(formula: Formula) -> Iterator[tuple]:
         yield from atoms_of(formula.body)
 
 
-def predicates_of(formula: Formula) -> set[tuple[str, int]]:
-    """The ``(name, arity)`` of every predicate in ``formula``, equality excluded."""
-    return {(a[0], len(a) - 1) for a in atoms_of(formula) if a[0] != EQUALITY}
-
-
 def _term_params(term: Term | Var) -> Iterator[Param]:
     if isinstance(term, Param):
         yield term

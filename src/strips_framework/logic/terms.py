@@ -48,14 +48,6 @@ Term = int | str | Param | tuple
 Atom = tuple  # (predicate, *args)
 
 
-def is_variable(term: Term) -> bool:
-    return type(term) is int
-
-
-def is_skolem_symbol(symbol: str) -> bool:
-    return symbol.startswith(SKOLEM_PREFIX)
-
-
 def subterms(term: Term) -> Iterator[Term]:
     """Yield ``term`` and every term inside it, depth first."""
     yield term
@@ -75,15 +67,6 @@ def params_of(term: Term) -> set[Param]:
 def is_ground(term: Term) -> bool:
     """True when the term holds no variable and no parameter."""
     return all(type(t) is not int and type(t) is not Param for t in subterms(term))
-
-
-def contains_skolem(term: Term) -> bool:
-    for t in subterms(term):
-        if type(t) is str and t.startswith(SKOLEM_PREFIX):
-            return True
-        if type(t) is tuple and t[0].startswith(SKOLEM_PREFIX):
-            return True
-    return False
 
 
 def term_to_str(term: Term, var_names: dict[int, str] | None = None) -> str:
