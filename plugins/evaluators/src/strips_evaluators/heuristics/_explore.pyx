@@ -1,8 +1,8 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True
 """The relaxed explorations of hadd, hFF and hmax, and LM-cut, compiled.
 
-The same algorithms as the pure-Python reference (:func:`.additive.additive_exploration`
-and :func:`.ff.relaxed_plan`, :func:`.hmax.max_exploration`) over the same
+The same algorithms as the pure-Python reference (:func:`.exploration.additive_exploration`
+and :func:`.exploration.relaxed_plan`, :func:`.exploration.max_exploration`) over the same
 :class:`~.relaxation.RelaxedTask`, laid out once as C arrays (compressed rows for the
 operators of each fact and the effects of each operator). The queue pops facts by cost,
 last in first out among equal costs, which is the order of the reference's bucket queue,
@@ -11,6 +11,7 @@ same; a differential test checks that on every shared domain. :class:`LMCut` is
 :class:`~.lmcut.LMCutEstimator` over the same arrays (see its docstring).
 """
 
+from cpython.exc cimport PyErr_CheckSignals
 from libc.stdlib cimport calloc, free, malloc, realloc
 
 import math
@@ -18,7 +19,7 @@ import math
 ctypedef unsigned long long u64
 
 cdef long long INFINITE = (<long long> 1) << 62
-#: Supporter of a fact that holds in the state (the reference's IN_STATE).
+#: Supporter of a fact that holds in the state (the reference's exploration.IN_STATE).
 cdef int IN_STATE = -1
 #: Pushes are numbered in a queue key's low 32 bits, counting down from this.
 cdef u64 LAST_ORDER = 0xFFFFFFFF
@@ -730,6 +731,10 @@ cdef class LMCut(Explorer):
             if self.sup[op] >= 0:
                 self._support(self.sup[op], op)
         while self.hmax[self.goal_fact]:
+            # A pending signal (the time limit's alarm, Ctrl-C, a test's timeout) runs its
+            # Python handler here, and what it raises ends the estimate: this loop never
+            # returns to the interpreter, which would otherwise run handlers only after it.
+            PyErr_CheckSignals()
             self._goal_zone()
             count = self._cut(num_start)
             if not count:  # never with a goal still costing something: a bug, not a value
