@@ -45,7 +45,7 @@ def test_strips_plugins_lists_it_with_its_distribution_and_capabilities(environm
     goals_left = out[out.index("  goals-left"):].splitlines()
     assert goals_left[0] == "  goals-left           strips-example-plugins (example)"
     assert "      capabilities: admissible" in goals_left
-    assert "      tie_break = 0.01" in goals_left
+    assert "      tie_break = 0.01  # subtracted per goal, to prefer deeper nodes among equals" in goals_left
 
 
 def test_chosen_from_a_toml_file_it_solves_and_the_plan_replays(environment, tmp_path):

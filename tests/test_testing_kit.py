@@ -22,6 +22,7 @@ from strips_framework.forward.result import ForwardStatistics
 from strips_framework.grounding.task import GroundTask
 from strips_framework.logic.terms import Param
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable, Option
 from strips_framework.result import Result, Status
 from strips_framework.testing import (
     CASES,
@@ -123,15 +124,22 @@ def test_declarations_are_checked():
         check_declaration(_Typo, "prover")
 
 
-def test_options_without_validation_are_caught():
+def test_options_declared_otherwise_are_caught():
     @frozen
     class _Lax:
         name: ClassVar[str] = "lax"
+        capabilities: ClassVar[frozenset[str]] = frozenset()
         strict: int = field(default=1, validator=validators.instance_of(int))
         patience: int = 3
 
-    with pytest.raises(ConformanceFailure, match="option 'patience' accepts"):
-        check_options_refuse_wrong_values(_Lax)
+    with pytest.raises(ConformanceFailure, match="takes strict, patience but declares no options"):
+        check_declaration(_Lax, "prover")
+
+    class _Typed(Configurable):
+        name: ClassVar[str] = "typed"
+        options = (Option("patience", int, 3),)
+
+    check_options_refuse_wrong_values(_Typed)  # the option system refuses a wrong value
 
 
 @frozen
@@ -192,14 +200,13 @@ def test_the_status_words_are_the_szs_ones():
 def test_the_suites_build_the_class_with_the_options_given(pytester):
     pytester.makepyfile(test_options=textwrap.dedent("""
         from typing import ClassVar
-        from attrs import field, frozen, validators
+        from strips_framework.options import Configurable, Option
         from strips_framework.testing import EvaluatorConformance
 
-        @frozen
-        class Weighted:
+        class Weighted(Configurable):
             name: ClassVar[str] = "weighted"
             capabilities: ClassVar[frozenset[str]] = frozenset()
-            weight: float = field(validator=validators.instance_of(float))  # no default
+            options = (Option("weight", float, 1.0),)
 
             def evaluate(self, node):
                 return node.cost * self.weight
@@ -210,6 +217,7 @@ def test_the_suites_build_the_class_with_the_options_given(pytester):
 
         class TestWeightless(EvaluatorConformance):
             evaluator_class = Weighted
+            options = {"weight": "heavy"}  # refused: every test of the kit fails
     """))
     result = pytester.runpytest_inprocess("-q", "-p", "no:cacheprovider", "-k", "declaration or three-boxes")
     result.assert_outcomes(passed=3, failed=3)

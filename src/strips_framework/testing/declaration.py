@@ -1,10 +1,10 @@
 """Checks every implementation class must pass, whatever its kind.
 
 The config builds implementations from TOML by keyword; it relies on the class having a
-``name`` and declared options (a :class:`~strips_framework.options.Configurable`'s
-``options``, or an attrs class's fields), being constructible with them, and refusing
-wrong values with ``TypeError``/``ValueError`` (which the config turns into a message
-naming the key). The capabilities a class declares are what the config checks combinations by
+``name`` and declaring its options as a :class:`~strips_framework.options.Configurable`
+(the one way options are declared; a class with none need not be one), being
+constructible with them, and refusing wrong values with ``ValueError`` (which the config
+turns into a message naming the key). The capabilities a class declares are what the config checks combinations by
 and what the kit holds it to, so they must be declared and spelled as in the vocabulary.
 """
 
@@ -31,11 +31,11 @@ def check_declaration(
     name = getattr(cls, "name", None)
     if not isinstance(name, str) or not name:
         raise ConformanceFailure(f"{cls.__qualname__} has no 'name' class attribute (a string)")
-    if not issubclass(cls, Configurable) and not hasattr(cls, "__attrs_attrs__"):
+    if not issubclass(cls, Configurable) and _parameters(cls):
         raise ConformanceFailure(
-            f"{name!r}: {cls.__qualname__} declares no options: derive it from "
-            "strips_framework.options.Configurable (or make it an attrs class) so the config "
-            "can pass them by keyword and 'strips plugins' can list them"
+            f"{name!r}: {cls.__qualname__} takes {', '.join(_parameters(cls))} but declares no "
+            "options: derive it from strips_framework.options.Configurable so the config can "
+            "pass them by keyword, check them and 'strips plugins' can list them"
         )
     try:
         cls(**options)
@@ -64,6 +64,16 @@ def check_declaration(
     return capabilities
 
 
+def _parameters(cls: type) -> list[str]:
+    """The parameters ``cls(...)`` takes (none for a class that takes nothing)."""
+    import inspect
+
+    try:
+        return list(inspect.signature(cls).parameters)
+    except (TypeError, ValueError):  # no signature to read: nothing to say about it
+        return []
+
+
 class _Wrong:
     """A value no option accepts."""
 
@@ -89,6 +99,5 @@ def check_options_refuse_wrong_values(
             ) from error
         raise ConformanceFailure(
             f"{cls.name!r}: option {option!r} accepts {_Wrong()!r}; declare its type "
-            "(strips_framework.options.Option, or an attrs validator such as instance_of) so "
-            "a config mistake is reported by key"
+            "(strips_framework.options.Option) so a config mistake is reported by key"
         )
