@@ -22,8 +22,8 @@ Every mistake is reported with the file, the key path and what was expected.
 
 from __future__ import annotations
 
-import warnings
 import itertools
+import warnings
 from pathlib import Path
 from typing import Any, NoReturn
 
