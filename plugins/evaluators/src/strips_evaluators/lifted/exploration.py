@@ -77,16 +77,24 @@ class Exploration:
             return cost, supporter
         triggers = program.triggers
 
+        cost_get = cost.get
+        cost_of = program.cost_of
+
         def fire(plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
             rule = plan.rule
-            body = set(matched) if rule.repeated_predicates else matched
-            if additive:
-                value = program.cost_of(rule, slots) + sum([cost[f] for f in body])
-            else:
-                value = program.cost_of(rule, slots) + max([cost[f] for f in body], default=0)
-            for name, terms in rule.heads:
-                head = (name, *[slots[s] for s in terms])
-                if value < cost.get(head, math.inf):
+            value = rule.cost if rule.cost is not None else cost_of(rule, slots)
+            if len(matched) == 1:
+                value += cost[matched[0]]
+            elif matched:
+                body = set(matched) if rule.repeated_predicates else matched
+                if additive:
+                    value += sum([cost[f] for f in body])
+                else:
+                    value += max([cost[f] for f in body])
+            for make in rule.makers:
+                head = make(slots)
+                old = cost_get(head)
+                if old is None or value < old:
                     cost[head] = value
                     supporter[head] = (rule, tuple(matched), tuple(slots))
                     heappush(heap, (value, head))
@@ -132,10 +140,15 @@ def join(
     last = len(steps)
     static_indexes = program.static_indexes
 
+    simple = not plan.free and not plan.final_checks
+
     def extend(depth: int) -> None:
         if depth == last:
-            for _ in program.instances(plan, slots):
+            if simple:
                 emit(plan, slots, matched)
+            else:
+                for _ in program.instances(plan, slots):
+                    emit(plan, slots, matched)
             return
         step = steps[depth]
         where = (step.predicate, step.positions)
@@ -165,7 +178,7 @@ def _match(step: Step, fact: GroundAtom, slots: list, static: dict) -> bool:
     for position, slot in step.repeats:
         if fact[position] != slots[slot]:
             return False
-    return passes(step.checks, slots, static)
+    return not step.checks or passes(step.checks, slots, static)
 
 
 def relaxed_plan(

@@ -23,8 +23,9 @@ atom plus one.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from itertools import product
+from operator import itemgetter
 
 from strips_framework.errors import InputError
 from strips_framework.grounding.normalize import Clause, Normalizer
@@ -42,8 +43,8 @@ AXIOM = -1
 
 class Check(Record):
     """A test on a binding, run as soon as its slots are bound: ``kind`` is ``"="``,
-    ``"!="`` (two slots), ``"type"`` (slot ``a`` in ``domain``) or ``"absent"`` (the
-    static fact ``(predicate, *slots)`` does not hold)."""
+    ``"!="`` (two slots), ``"type"`` (slot ``a`` in ``domain``), ``"absent"`` or
+    ``"present"`` (the static fact ``(predicate, *slots)`` does not hold, holds)."""
 
     kind: str
     slots: tuple[int, ...]
@@ -162,10 +163,13 @@ class Rule(Record):
     #: True when two body atoms share a predicate, so an instance may list a fact twice
     #: (the ground relaxation counts a precondition once).
     repeated_predicates: bool
+    #: Per head, a function from the slot list to the ground head (an ``itemgetter``
+    #: over the slots: the head's predicate name is a slot too).
+    makers: tuple[Callable[[list], GroundAtom], ...]
 
     __slots__ = (
         "number", "template", "heads", "negative", "action", "arity", "operator", "identity", "cost",
-        "cost_term", "repeated_predicates",
+        "cost_term", "repeated_predicates", "makers",
     )  # fmt: skip
 
     def __init__(
@@ -181,6 +185,7 @@ class Rule(Record):
         cost: int | None,
         cost_term: tuple[str, tuple[int, ...]],
         repeated_predicates: bool,
+        makers: tuple[Callable[[list], GroundAtom], ...],
     ) -> None:
         self.number = number
         self.template = template
@@ -193,6 +198,7 @@ class Rule(Record):
         self.cost = cost
         self.cost_term = cost_term
         self.repeated_predicates = repeated_predicates
+        self.makers = makers
 
 
 class Program:
@@ -306,7 +312,9 @@ class Program:
                         f"variable {term} is not a parameter",
                     )
                 slot[term] = len(slot)
-        template = (None,) * len(everything) + tuple(list(slot)[len(everything):])
+        unique = dict.fromkeys(atom.predicate for atom in heads)
+        names = {predicate: i for i, predicate in enumerate(unique, start=len(slot))}
+        template = (None,) * len(everything) + tuple(list(slot)[len(everything):]) + tuple(names)
         body = [atom for atom in clause.positive if atom.predicate != "="]
         checks = [Check("=", (slot[a.args[0]], slot[a.args[1]]))
                   for a in clause.positive if a.predicate == "="]  # fmt: skip
@@ -350,6 +358,10 @@ class Program:
             cost=cost,
             cost_term=cost_term,
             repeated_predicates=len(set(predicates)) < len(predicates),
+            makers=tuple(
+                _maker(a.predicate, names[a.predicate], tuple(slot[arg] for arg in a.args))
+                for a in heads
+            ),
         )
         self.rules.append(rule)
         atoms = [(a.predicate, tuple(slot[arg] for arg in a.args)) for a in body]
@@ -380,7 +392,7 @@ class Program:
         if trigger is not None:
             first = self._step(atoms[trigger], bound, pending, fluent=True, before=False, trigger=True)
         rest = [i for i in range(len(atoms)) if i != trigger]
-        steps = []
+        steps: list[Step] = []
         while rest:
             def score(i: int) -> tuple[int, int, int]:
                 predicate, terms = atoms[i]
@@ -389,8 +401,14 @@ class Program:
 
             best = max(rest, key=score)
             rest.remove(best)
-            predicate = atoms[best][0]
+            predicate, terms = atoms[best]
             is_fluent = predicate not in self.static
+            previous = steps[-1] if steps else first
+            if not is_fluent and previous is not None and all(t in bound for t in terms):
+                # A static atom with every argument bound is a membership test, run with
+                # the previous step's tests rather than as a join level of its own.
+                previous.checks += (Check("present", terms, predicate),)
+                continue
             before = trigger is not None and is_fluent and best < trigger
             steps.append(self._step(atoms[best], bound, pending, is_fluent, before))
         free = tuple(i for i in range(variables) if i not in bound)
@@ -462,6 +480,13 @@ class Program:
                 yield None
 
 
+def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list], GroundAtom]:
+    if not terms:
+        atom = (name,)
+        return lambda slots: atom
+    return itemgetter(name_slot, *terms)
+
+
 def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[GroundAtom]]) -> bool:
     for check in checks:
         kind = check.kind
@@ -474,6 +499,8 @@ def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[Gr
         elif kind == "=":
             if slots[check.slots[0]] != slots[check.slots[1]]:
                 return False
-        elif (check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]:
+        elif ((check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]) != (
+            kind == "present"
+        ):
             return False
     return True
