@@ -141,6 +141,7 @@ def join(
     static_indexes = program.static_indexes
 
     simple = not plan.free and not plan.final_checks
+    probes = plan.probes
 
     def extend(depth: int) -> None:
         if depth == last:
@@ -150,6 +151,11 @@ def join(
                 for _ in program.instances(plan, slots):
                     emit(plan, slots, matched)
             return
+        for later in probes[depth]:
+            probe = steps[later]
+            index = lookup.get((probe.predicate, probe.positions))
+            if not index or tuple([slots[s] for s in probe.key]) not in index:
+                return
         step = steps[depth]
         where = (step.predicate, step.positions)
         index = lookup.get(where) if step.fluent else static_indexes[where]

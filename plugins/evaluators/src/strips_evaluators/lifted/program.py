@@ -113,7 +113,11 @@ class Plan(Record):
     """How to complete a binding of ``rule``: the ``trigger`` step (None for the plan
     that starts from nothing) binds the new fact, then ``steps`` join the other atoms,
     then the ``free`` slots no atom binds range over their ``domains`` (with
-    ``final_checks``)."""
+    ``final_checks``). ``probes[d]`` lists later fluent steps whose key is bound before
+    step ``d``: if one of them has no fact under its key, no completion exists and step
+    ``d``'s candidates are not enumerated (a semi-join filter: a relaxed exploration
+    settles fluent facts gradually, and a static relation joined before an empty fluent
+    one would be enumerated for nothing)."""
 
     rule: Rule
     trigger: Step | None
@@ -121,8 +125,9 @@ class Plan(Record):
     free: tuple[int, ...]
     domains: tuple[tuple[str, ...], ...]
     final_checks: tuple[Check, ...]
+    probes: tuple[tuple[int, ...], ...]
 
-    __slots__ = ("rule", "trigger", "steps", "free", "domains", "final_checks")
+    __slots__ = ("rule", "trigger", "steps", "free", "domains", "final_checks", "probes")
 
     def __init__(
         self,
@@ -132,6 +137,7 @@ class Plan(Record):
         free: tuple[int, ...],
         domains: tuple[tuple[str, ...], ...],
         final_checks: tuple[Check, ...],
+        probes: tuple[tuple[int, ...], ...],
     ) -> None:
         self.rule = rule
         self.trigger = trigger
@@ -139,6 +145,7 @@ class Plan(Record):
         self.free = free
         self.domains = domains
         self.final_checks = final_checks
+        self.probes = probes
 
 
 class Rule(Record):
@@ -214,6 +221,11 @@ class Program:
         for atom in task.problem.init:
             if atom.predicate in self.static:
                 self.static_facts[atom.predicate].add((atom.predicate, *atom.args))
+        #: The initial state's fluent facts by predicate (join-order estimates only).
+        self.initial_facts: dict[str, list[GroundAtom]] = {}
+        for atom in task.problem.init:
+            if atom.predicate not in self.static:
+                self.initial_facts.setdefault(atom.predicate, []).append((atom.predicate, *atom.args))
         self.numeric = {
             (term.predicate, *term.args): value for term, value in task.problem.numeric
         }
@@ -384,8 +396,14 @@ class Program:
         domains: dict[int, tuple[str, ...]],
         variables: int,
     ) -> Plan:
-        """The join order: the trigger first, then greedily the atom with most bound
-        arguments (static ones first among equals: they filter without growing)."""
+        """The join order: the trigger first, then greedily the atom with the fewest
+        expected candidates: none for an atom whose arguments are all bound (a test),
+        else the average bucket size of its index over the static facts for a static
+        atom. Which facts of a fluent atom a state settles is not known up front: its
+        bucket size lies between that over the initial state's facts and the product of
+        its unbound variables' domain sizes (what exploration may reach), and their
+        geometric mean is the estimate. Static atoms go first among equals: they filter
+        without growing."""
         bound = set(range(variables, len(rule.template)))  # constants
         pending = list(checks)
         first = None
@@ -393,13 +411,22 @@ class Program:
             first = self._step(atoms[trigger], bound, pending, fluent=True, before=False, trigger=True)
         rest = [i for i in range(len(atoms)) if i != trigger]
         steps: list[Step] = []
+        bound_before: list[set[int]] = []
         while rest:
-            def score(i: int) -> tuple[int, int, int]:
+            def expected(i: int) -> tuple[float, bool]:
                 predicate, terms = atoms[i]
-                known = sum(1 for t in terms if t in bound)
-                return (known == len(terms), known, predicate in self.static)
+                positions = tuple(p for p, t in enumerate(terms, start=1) if t in bound)
+                if len(positions) == len(terms):
+                    return 0, predicate not in self.static
+                if predicate in self.static:
+                    return self._bucket_size(predicate, positions), False
+                reachable = 1.0
+                for slot in {t for t in terms if t not in bound}:
+                    reachable *= len(domains[slot])
+                initial = max(self._bucket_size(predicate, positions), 1.0)
+                return (initial * reachable) ** 0.5, True
 
-            best = max(rest, key=score)
+            best = min(rest, key=expected)
             rest.remove(best)
             predicate, terms = atoms[best]
             is_fluent = predicate not in self.static
@@ -410,8 +437,20 @@ class Program:
                 previous.checks += (Check("present", terms, predicate),)
                 continue
             before = trigger is not None and is_fluent and best < trigger
+            bound_before.append(set(bound))
             steps.append(self._step(atoms[best], bound, pending, is_fluent, before))
         free = tuple(i for i in range(variables) if i not in bound)
+        probes: list[tuple[int, ...]] = []
+        probed: set[int] = set()
+        for depth, known in enumerate(bound_before):
+            ready = [
+                later
+                for later in range(depth + 1, len(steps))
+                if steps[later].fluent and later not in probed
+                and all(slot in known for slot in steps[later].key)
+            ]
+            probed.update(ready)
+            probes.append(tuple(ready))
         return Plan(
             rule=rule,
             trigger=first,
@@ -419,7 +458,15 @@ class Program:
             free=free,
             domains=tuple(domains[i] for i in free),
             final_checks=tuple(pending),
+            probes=tuple(probes),
         )
+
+    def _bucket_size(self, predicate: str, positions: tuple[int, ...]) -> float:
+        """The average number of static (or initial) facts of ``predicate`` per value of
+        the arguments at ``positions``."""
+        facts = self.static_facts.get(predicate) or self.initial_facts.get(predicate, ())
+        keys = {tuple([fact[i] for i in positions]) for fact in facts}
+        return len(facts) / max(len(keys), 1)
 
     def _step(
         self,
