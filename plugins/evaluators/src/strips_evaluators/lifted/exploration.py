@@ -14,10 +14,10 @@ task; the supporter of a fact is the first instance to reach its final cost.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from heapq import heappop, heappush
 
-from strips_evaluators.lifted.program import AXIOM, Plan, Program, Rule, Step, passes
+from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram, Step, passes
 from strips_framework.lifted.components import ActionInstance, GroundAtom
 
 #: A rule instance that achieved a fact: the rule, its fluent body facts, its slots.
@@ -28,7 +28,7 @@ Index = dict[tuple[str, ...], list[GroundAtom]]
 class Exploration:
     """The explorations of one task; :meth:`costs` runs one per state."""
 
-    def __init__(self, program: Program) -> None:
+    def __init__(self, program: RuleProgram) -> None:
         self.program = program
         #: Instances of rules without fluent body atoms, the same in every state:
         #: ``(cost, heads, supporter)``.
@@ -44,10 +44,14 @@ class Exploration:
         )
 
     def costs(
-        self, state: frozenset[GroundAtom], additive: bool
+        self,
+        state: Collection[GroundAtom],
+        additive: bool,
+        until: Collection[GroundAtom] | None = None,
     ) -> tuple[dict[GroundAtom, float], dict[GroundAtom, Supporter]]:
-        """The hadd (``additive``) or hmax costs of the facts reached before every goal
-        fact is settled, and their best supporters (none for the state's facts)."""
+        """The hadd (``additive``) or hmax costs of the facts reached before every fact
+        of ``until`` (by default the goal's) is settled, and their best supporters (none
+        for the state's facts); with an empty ``until``, of every fact reachable."""
         program = self.program
         cost: dict[GroundAtom, float] = {}
         supporter: dict[GroundAtom, Supporter] = {}
@@ -71,10 +75,11 @@ class Exploration:
             for predicate, pairs in indexes.items()
             for positions, index in pairs
         }
-        goal = set(program.fluent_goal)
-        goals_left = len(goal)
-        if not goals_left:
-            return cost, supporter
+        goal = set(program.fluent_goal if until is None else until)
+        if until is None and not goal:
+            return cost, supporter  # nothing to reach
+        goals_left = len(goal) if goal else -1  # -1: never counts down to 0
+
         triggers = program.triggers
 
         cost_get = cost.get
@@ -120,7 +125,7 @@ class Exploration:
         return cost, supporter
 
 def join(
-    program: Program,
+    program: RuleProgram,
     plan: Plan,
     fact: GroundAtom | None,
     lookup: dict[tuple[str, tuple[int, ...]], Index],
@@ -188,14 +193,16 @@ def _match(step: Step, fact: GroundAtom, slots: list, static: dict) -> bool:
 
 
 def relaxed_plan(
-    program: Program,
+    program: RuleProgram,
     cost: dict[GroundAtom, float],
     supporter: dict[GroundAtom, Supporter],
+    goal: Collection[GroundAtom] | None = None,
 ) -> tuple[float, dict[tuple, Supporter]]:
     """hFF: the cost of the relaxed plan the best supporters give, walking back from the
-    goal, and its rule instances by ``(rule number, slots)``; a ground operator used for
-    several of its effects counts once (as in the ground hFF)."""
-    goal = program.fluent_goal
+    goal (by default the task's), and its rule instances by ``(rule number, slots)``; a
+    ground operator used for several of its effects counts once (as in the ground hFF)."""
+    if goal is None:
+        goal = program.fluent_goal
     if program.static_goal_missing or any(fact not in cost for fact in goal):
         return math.inf, {}
     plan: dict[tuple, Supporter] = {}
@@ -217,5 +224,5 @@ def relaxed_plan(
     return sum(operators.values()), plan
 
 
-def action_instance(program: Program, rule: Rule, slots: tuple[str, ...]) -> ActionInstance:
-    return program.task.domain.actions[rule.action].name, slots[: rule.arity]
+def action_instance(program: RuleProgram, rule: Rule, slots: tuple[str, ...]) -> ActionInstance:
+    return program.action_names[rule.action], slots[: rule.arity]

@@ -23,7 +23,7 @@ atom plus one.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from itertools import product
 from operator import itemgetter
 
@@ -31,7 +31,7 @@ from strips_framework.errors import InputError
 from strips_framework.grounding.normalize import Clause, Normalizer
 from strips_framework.lifted.components import GroundAtom, static_predicates
 from strips_framework.pddl.formulas import Atom, Parameter
-from strips_framework.pddl.task import Action, PddlTask, missing_cost
+from strips_framework.pddl.task import Action, PddlTask
 from strips_framework.records import Record
 
 #: The derived atom that stands for a goal which is not a conjunction of atoms (as in
@@ -208,27 +208,35 @@ class Rule(Record):
         self.makers = makers
 
 
-class Program:
-    """The relaxed program of one task (see the module docstring)."""
+class RuleProgram:
+    """Relaxed rules over a set of objects and static facts, compiled to join plans; the
+    front-ends say where the rules come from (:class:`Program` for a PDDL task)."""
 
-    def __init__(self, task: PddlTask) -> None:
-        self.task = task
-        self.static = static_predicates(task)
-        self.derived = {rule.head.predicate for rule in task.domain.derived}
-        self.objects = frozenset(task.objects_of(("object",)))
+    def __init__(
+        self,
+        static: frozenset[str],
+        initial: Iterable[GroundAtom],
+        objects_of: Callable[[tuple[str, ...]], tuple[str, ...]],
+        source: str,
+    ) -> None:
+        self.static = static
+        self.objects_of = objects_of
+        #: The file named in messages about the rules.
+        self.source = source
+        self.derived: set[str] = set()
+        self.objects = frozenset(objects_of(("object",)))
         #: Static facts by predicate, from the initial state.
-        self.static_facts: dict[str, set[GroundAtom]] = {name: set() for name in self.static}
-        for atom in task.problem.init:
-            if atom.predicate in self.static:
-                self.static_facts[atom.predicate].add((atom.predicate, *atom.args))
+        self.static_facts: dict[str, set[GroundAtom]] = {name: set() for name in static}
         #: The initial state's fluent facts by predicate (join-order estimates only).
         self.initial_facts: dict[str, list[GroundAtom]] = {}
-        for atom in task.problem.init:
-            if atom.predicate not in self.static:
-                self.initial_facts.setdefault(atom.predicate, []).append((atom.predicate, *atom.args))
-        self.numeric = {
-            (term.predicate, *term.args): value for term, value in task.problem.numeric
-        }
+        for fact in initial:
+            if fact[0] in static:
+                self.static_facts[fact[0]].add(fact)
+            else:
+                self.initial_facts.setdefault(fact[0], []).append(fact)
+        self.numeric: dict[GroundAtom, int] = {}
+        #: The names of the actions ``Rule.action`` indexes.
+        self.action_names: list[str] = []
         self.rules: list[Rule] = []
         #: Per fluent (or derived) predicate, the plans it triggers.
         self.triggers: dict[str, list[Plan]] = {}
@@ -240,51 +248,13 @@ class Program:
         #: Index keys ``(predicate, positions)`` the plans look facts up with.
         self.fluent_indexes: dict[str, list[tuple[int, ...]]] = {}
         self.static_indexes: dict[tuple[str, tuple[int, ...]], dict[tuple[str, ...], list]] = {}
-        normalizer = Normalizer(task)
-        for number, action in enumerate(task.domain.actions):
-            for operator, clause in enumerate(normalizer.clauses(action.precondition)):
-                self._add(clause, action.params, action.add, number, operator, action)
-                for effect in action.conditional:
-                    if not effect.add:
-                        continue
-                    for condition in normalizer.clauses(effect.condition):
-                        self._add(
-                            clause.join(Clause(effect.params)).join(condition),
-                            action.params,
-                            effect.add,
-                            number,
-                            operator,
-                            action,
-                            identity=len(action.params) + len(clause.params),
-                        )
-        for derived in task.domain.derived:
-            for clause in normalizer.clauses(derived.body):
-                self._add(clause, derived.params, (derived.head,), AXIOM, 0, None)
-        goal_clauses = normalizer.clauses(task.problem.goal)
-        self.goal: tuple[GroundAtom, ...]
-        if len(goal_clauses) == 1 and not goal_clauses[0].params and not goal_clauses[0].negative:
-            atoms = [atom for atom in goal_clauses[0].positive if atom.predicate != "="]
-            self.goal = tuple(dict.fromkeys((atom.predicate, *atom.args) for atom in atoms))
-        else:
-            self.goal = (GOAL,)
-            for clause in goal_clauses:
-                self._add(clause, (), (Atom(GOAL[0], ()),), AXIOM, 0, None)
-        done = 0
-        while done < len(normalizer.auxiliary):  # their bodies may add more
-            auxiliary = normalizer.auxiliary[done]
-            done += 1
-            self.derived.add(auxiliary.head.predicate)
-            for clause in normalizer.clauses(auxiliary.body):
-                self._add(clause, auxiliary.params, (auxiliary.head,), AXIOM, 0, None)
-        self.derived.add(GOAL[0])
+        #: The goal facts a state can change; explorations stop once all are settled.
+        self.fluent_goal: tuple[GroundAtom, ...] = ()
         #: Goal facts of static predicates that do not hold: no state reaches the goal.
-        self.static_goal_missing = sum(
-            1
-            for fact in self.goal
-            if fact[0] in self.static and fact not in self.static_facts[fact[0]]
-        )
-        #: The goal facts a state can change (fluent or derived ones).
-        self.fluent_goal = tuple(fact for fact in self.goal if fact[0] not in self.static)
+        self.static_goal_missing = 0
+
+    def _index_static_facts(self) -> None:
+        """Fills the static indexes the plans use (once every rule is added)."""
         for (predicate, positions), index in self.static_indexes.items():
             for fact in self.static_facts.get(predicate, ()):
                 index.setdefault(tuple([fact[i] for i in positions]), []).append(fact)
@@ -297,9 +267,14 @@ class Program:
         term = (function, *[slots[i] for i in arguments])
         value = self.numeric.get(term)
         if value is None:
-            action = self.task.domain.actions[rule.action]
-            raise missing_cost(self.task, Atom(function, term[1:]), action)
+            name = self.action_names[rule.action]
+            raise InputError(
+                self.source, None, None,
+                f"no initial value for ({' '.join(term)}), the cost of {name!r}",
+            )
         return value
+
+
 
     def _add(
         self,
@@ -308,21 +283,22 @@ class Program:
         heads: tuple[Atom, ...],
         action: int,
         operator: int,
-        source: Action | None,
+        cost: int | Atom,
+        line: int | None = None,
         identity: int | None = None,
     ) -> None:
+        """A rule for ``clause`` (over ``params`` and its own variables) with these
+        ``heads``, for ``action`` (or :data:`AXIOM`) at ``cost``: a number, or a numeric
+        function term over the rule's variables (``line`` locates it in messages)."""
         everything = params + clause.params
         slot = {param.name: i for i, param in enumerate(everything)}
         mentioned = [arg for atom in (*clause.positive, *clause.negative, *heads) for arg in atom.args]
-        if source is not None and isinstance(source.cost, Atom):
-            mentioned += source.cost.args
+        if isinstance(cost, Atom):
+            mentioned += cost.args
         for term in mentioned:
             if term not in slot:
                 if term.startswith("?"):
-                    raise InputError(
-                        self.task.domain_path, source.line if source else None, None,
-                        f"variable {term} is not a parameter",
-                    )
+                    raise InputError(self.source, line, None, f"variable {term} is not a parameter")
                 slot[term] = len(slot)
         unique = dict.fromkeys(atom.predicate for atom in heads)
         names = {predicate: i for i, predicate in enumerate(unique, start=len(slot))}
@@ -338,21 +314,12 @@ class Program:
             if a.predicate in self.static
         ]
         for i, param in enumerate(everything):
-            domain = frozenset(self.task.objects_of(param.types))
+            domain = frozenset(self.objects_of(param.types))
             if domain != self.objects:
                 checks.append(Check("type", (i,), domain=domain))
-        cost: int | None = 1
         cost_term: tuple[str, tuple[int, ...]] = ("", ())
-        if source is None:
-            cost = 0
-        elif self.task.problem.minimize_cost:
-            if source.cost is None:
-                cost = 0
-            elif isinstance(source.cost, int):
-                cost = source.cost
-            else:
-                cost = None
-                cost_term = (source.cost.predicate, tuple(slot[a] for a in source.cost.args))
+        if isinstance(cost, Atom):
+            cost_term = (cost.predicate, tuple(slot[a] for a in cost.args))
         predicates = [atom.predicate for atom in body]
         rule = Rule(
             number=len(self.rules),
@@ -367,7 +334,7 @@ class Program:
             arity=len(params) if action != AXIOM else 0,
             operator=operator,
             identity=len(everything) if identity is None else identity,
-            cost=cost,
+            cost=None if isinstance(cost, Atom) else cost,
             cost_term=cost_term,
             repeated_predicates=len(set(predicates)) < len(predicates),
             makers=tuple(
@@ -377,7 +344,7 @@ class Program:
         )
         self.rules.append(rule)
         atoms = [(a.predicate, tuple(slot[arg] for arg in a.args)) for a in body]
-        domains = {i: self.task.objects_of(p.types) for i, p in enumerate(everything)}
+        domains = {i: self.objects_of(p.types) for i, p in enumerate(everything)}
         fluent = [i for i, (predicate, _) in enumerate(atoms) if predicate not in self.static]
         if action == AXIOM:
             self.derivations.append(self._plan(rule, atoms, None, checks, domains, len(everything)))
@@ -526,6 +493,71 @@ class Program:
             if passes(plan.final_checks, slots, self.static_facts):
                 yield None
 
+
+class Program(RuleProgram):
+    """The relaxed program of a PDDL task (see the module docstring)."""
+
+    def __init__(self, task: PddlTask) -> None:
+        initial = [(atom.predicate, *atom.args) for atom in task.problem.init]
+        super().__init__(static_predicates(task), initial, task.objects_of, task.problem_path)
+        self.task = task
+        self.action_names = [action.name for action in task.domain.actions]
+        self.derived = {rule.head.predicate for rule in task.domain.derived}
+        self.numeric = {
+            (term.predicate, *term.args): value for term, value in task.problem.numeric
+        }
+        normalizer = Normalizer(task)
+        for number, action in enumerate(task.domain.actions):
+            for operator, clause in enumerate(normalizer.clauses(action.precondition)):
+                cost = self._action_cost(action)
+                self._add(clause, action.params, action.add, number, operator, cost, action.line)
+                for effect in action.conditional:
+                    if not effect.add:
+                        continue
+                    for condition in normalizer.clauses(effect.condition):
+                        self._add(
+                            clause.join(Clause(effect.params)).join(condition),
+                            action.params,
+                            effect.add,
+                            number,
+                            operator,
+                            cost,
+                            action.line,
+                            identity=len(action.params) + len(clause.params),
+                        )
+        for derived in task.domain.derived:
+            for clause in normalizer.clauses(derived.body):
+                self._add(clause, derived.params, (derived.head,), AXIOM, 0, 0)
+        goal_clauses = normalizer.clauses(task.problem.goal)
+        self.goal: tuple[GroundAtom, ...]
+        if len(goal_clauses) == 1 and not goal_clauses[0].params and not goal_clauses[0].negative:
+            atoms = [atom for atom in goal_clauses[0].positive if atom.predicate != "="]
+            self.goal = tuple(dict.fromkeys((atom.predicate, *atom.args) for atom in atoms))
+        else:
+            self.goal = (GOAL,)
+            for clause in goal_clauses:
+                self._add(clause, (), (Atom(GOAL[0], ()),), AXIOM, 0, 0)
+        done = 0
+        while done < len(normalizer.auxiliary):  # their bodies may add more
+            auxiliary = normalizer.auxiliary[done]
+            done += 1
+            self.derived.add(auxiliary.head.predicate)
+            for clause in normalizer.clauses(auxiliary.body):
+                self._add(clause, auxiliary.params, (auxiliary.head,), AXIOM, 0, 0)
+        self.derived.add(GOAL[0])
+        self.static_goal_missing = sum(
+            1
+            for fact in self.goal
+            if fact[0] in self.static and fact not in self.static_facts[fact[0]]
+        )
+        self.fluent_goal = tuple(fact for fact in self.goal if fact[0] not in self.static)
+        self._index_static_facts()
+
+    def _action_cost(self, action: Action) -> int | Atom:
+        """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
+        if not self.task.problem.minimize_cost:
+            return 1
+        return 0 if action.cost is None else action.cost
 
 def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list], GroundAtom]:
     if not terms:
