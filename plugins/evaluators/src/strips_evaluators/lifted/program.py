@@ -1,0 +1,585 @@
+"""The delete relaxation of a lifted PDDL task as a Datalog program, compiled once per task.
+
+Every action becomes one rule per disjunct of its normalized precondition: the rule's body
+is the disjunct's positive atoms, its heads the action's add effects, its cost the
+action's. A conditional effect becomes a rule per (precondition disjunct, condition
+disjunct) pair whose body joins both and whose heads are the effect's adds, at the
+action's cost; a derived predicate (and an auxiliary one the normalizer makes for a
+universal condition) a zero-cost rule; a goal that is not a conjunction of atoms the
+zero-cost rules of the derived atom ``(@goal)``. This is exactly the relaxation the ground
+heuristics use (:mod:`strips_evaluators.heuristics.relaxation`), read before grounding:
+negative literals over fluent or derived predicates are ignored, negative static literals,
+equalities and the parameters' types are checked, and nothing is enumerated up front but
+the instances of rules whose body has no fluent atom (they hold in every state).
+
+A rule is evaluated semi-naively by :mod:`.exploration`: when a fact is settled, every
+rule with a body atom of its predicate is joined with that atom bound to the fact and the
+other atoms bound to facts settled before (a :class:`Plan` per such *trigger* atom). A
+binding is a list of *slots*, one per rule variable followed by the constants the rule
+mentions, so every term is a slot number. Facts are the state's tuples
+``(predicate, object, ...)``, so an argument's position in a fact is its position in the
+atom plus one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from itertools import product
+from operator import itemgetter
+
+from strips_framework.errors import InputError
+from strips_framework.grounding.normalize import Clause, Normalizer
+from strips_framework.lifted.components import GroundAtom, static_predicates
+from strips_framework.pddl.formulas import Atom, Parameter
+from strips_framework.pddl.task import Action, PddlTask
+from strips_framework.records import Record
+
+#: The derived atom that stands for a goal which is not a conjunction of atoms (as in
+#: grounding).
+GOAL: GroundAtom = ("@goal",)
+#: ``Rule.action`` of a rule that comes from a derived predicate or the goal.
+AXIOM = -1
+
+
+class Check(Record):
+    """A test on a binding, run as soon as its slots are bound: ``kind`` is ``"="``,
+    ``"!="`` (two slots), ``"type"`` (slot ``a`` in ``domain``), ``"absent"`` or
+    ``"present"`` (the static fact ``(predicate, *slots)`` does not hold, holds)."""
+
+    kind: str
+    slots: tuple[int, ...]
+    predicate: str
+    domain: frozenset[str]
+
+    __slots__ = ("kind", "slots", "predicate", "domain")
+
+    def __init__(
+        self,
+        kind: str,
+        slots: tuple[int, ...],
+        predicate: str = "",
+        domain: frozenset[str] = frozenset(),
+    ) -> None:
+        self.kind = kind
+        self.slots = slots
+        self.predicate = predicate
+        self.domain = domain
+
+
+class Step(Record):
+    """Match the facts of ``predicate`` whose arguments at ``positions`` are the values
+    of the ``key`` slots (an index lookup); bind ``binds`` ``(position, slot)``, test
+    that ``repeats`` ``(position, slot)`` equal slots bound in this same fact, then run
+    ``checks``. ``fluent`` steps match facts settled in the state, the others static
+    facts; ``before_trigger`` steps must not match the trigger fact itself (so a rule
+    instance is found once, from its first atom that the new fact matches)."""
+
+    predicate: str
+    positions: tuple[int, ...]
+    key: tuple[int, ...]
+    binds: tuple[tuple[int, int], ...]
+    repeats: tuple[tuple[int, int], ...]
+    checks: tuple[Check, ...]
+    fluent: bool
+    before_trigger: bool
+
+    __slots__ = (
+        "predicate", "positions", "key", "binds", "repeats", "checks", "fluent",
+        "before_trigger",
+    )  # fmt: skip
+
+    def __init__(
+        self,
+        predicate: str,
+        positions: tuple[int, ...],
+        key: tuple[int, ...],
+        binds: tuple[tuple[int, int], ...],
+        repeats: tuple[tuple[int, int], ...],
+        checks: tuple[Check, ...],
+        fluent: bool,
+        before_trigger: bool,
+    ) -> None:
+        self.predicate = predicate
+        self.positions = positions
+        self.key = key
+        self.binds = binds
+        self.repeats = repeats
+        self.checks = checks
+        self.fluent = fluent
+        self.before_trigger = before_trigger
+
+
+class Plan(Record):
+    """How to complete a binding of ``rule``: the ``trigger`` step (None for the plan
+    that starts from nothing) binds the new fact, then ``steps`` join the other atoms,
+    then the ``free`` slots no atom binds range over their ``domains`` (with
+    ``final_checks``). ``probes[d]`` lists later fluent steps whose key is bound before
+    step ``d``: if one of them has no fact under its key, no completion exists and step
+    ``d``'s candidates are not enumerated (a semi-join filter: a relaxed exploration
+    settles fluent facts gradually, and a static relation joined before an empty fluent
+    one would be enumerated for nothing)."""
+
+    rule: Rule
+    trigger: Step | None
+    steps: tuple[Step, ...]
+    free: tuple[int, ...]
+    domains: tuple[tuple[str, ...], ...]
+    final_checks: tuple[Check, ...]
+    probes: tuple[tuple[int, ...], ...]
+
+    __slots__ = ("rule", "trigger", "steps", "free", "domains", "final_checks", "probes")
+
+    def __init__(
+        self,
+        rule: Rule,
+        trigger: Step | None,
+        steps: tuple[Step, ...],
+        free: tuple[int, ...],
+        domains: tuple[tuple[str, ...], ...],
+        final_checks: tuple[Check, ...],
+        probes: tuple[tuple[int, ...], ...],
+    ) -> None:
+        self.rule = rule
+        self.trigger = trigger
+        self.steps = steps
+        self.free = free
+        self.domains = domains
+        self.final_checks = final_checks
+        self.probes = probes
+
+
+class Rule(Record):
+    """One relaxed rule. ``template`` is the initial slot list (``None`` for variables,
+    then the constants); ``heads`` and ``negative`` are ``(predicate, slots)``;
+    ``action`` indexes ``task.domain.actions`` (or is :data:`AXIOM`), ``arity`` is the
+    number of the action's parameters (the first slots); the ground operator an instance
+    belongs to is its action, ``operator`` (the precondition disjunct) and its first
+    ``identity`` slots (the action's parameters and the disjunct's own variables). ``cost`` is the constant
+    cost, or ``None`` when ``cost_term`` ``(function, slots)`` gives it per instance."""
+
+    number: int
+    template: tuple[str | None, ...]
+    heads: tuple[tuple[str, tuple[int, ...]], ...]
+    negative: tuple[tuple[str, tuple[int, ...]], ...]
+    action: int
+    arity: int
+    operator: int
+    identity: int
+    cost: int | None
+    cost_term: tuple[str, tuple[int, ...]]
+    #: True when two body atoms share a predicate, so an instance may list a fact twice
+    #: (the ground relaxation counts a precondition once).
+    repeated_predicates: bool
+    #: Per head, a function from the slot list to the ground head (an ``itemgetter``
+    #: over the slots: the head's predicate name is a slot too).
+    makers: tuple[Callable[[list], GroundAtom], ...]
+
+    __slots__ = (
+        "number", "template", "heads", "negative", "action", "arity", "operator", "identity", "cost",
+        "cost_term", "repeated_predicates", "makers",
+    )  # fmt: skip
+
+    def __init__(
+        self,
+        number: int,
+        template: tuple[str | None, ...],
+        heads: tuple[tuple[str, tuple[int, ...]], ...],
+        negative: tuple[tuple[str, tuple[int, ...]], ...],
+        action: int,
+        arity: int,
+        operator: int,
+        identity: int,
+        cost: int | None,
+        cost_term: tuple[str, tuple[int, ...]],
+        repeated_predicates: bool,
+        makers: tuple[Callable[[list], GroundAtom], ...],
+    ) -> None:
+        self.number = number
+        self.template = template
+        self.heads = heads
+        self.negative = negative
+        self.action = action
+        self.arity = arity
+        self.operator = operator
+        self.identity = identity
+        self.cost = cost
+        self.cost_term = cost_term
+        self.repeated_predicates = repeated_predicates
+        self.makers = makers
+
+
+class RuleProgram:
+    """Relaxed rules over a set of objects and static facts, compiled to join plans; the
+    front-ends say where the rules come from (:class:`Program` for a PDDL task)."""
+
+    def __init__(
+        self,
+        static: frozenset[str],
+        initial: Iterable[GroundAtom],
+        objects_of: Callable[[tuple[str, ...]], tuple[str, ...]],
+        source: str,
+    ) -> None:
+        self.static = static
+        self.objects_of = objects_of
+        #: The file named in messages about the rules.
+        self.source = source
+        self.derived: set[str] = set()
+        self.objects = frozenset(objects_of(("object",)))
+        #: Static facts by predicate, from the initial state.
+        self.static_facts: dict[str, set[GroundAtom]] = {name: set() for name in static}
+        #: The initial state's fluent facts by predicate (join-order estimates only).
+        self.initial_facts: dict[str, list[GroundAtom]] = {}
+        for fact in initial:
+            if fact[0] in static:
+                self.static_facts[fact[0]].add(fact)
+            else:
+                self.initial_facts.setdefault(fact[0], []).append(fact)
+        self.numeric: dict[GroundAtom, int] = {}
+        #: The names of the actions ``Rule.action`` indexes.
+        self.action_names: list[str] = []
+        self.rules: list[Rule] = []
+        #: Per fluent (or derived) predicate, the plans it triggers.
+        self.triggers: dict[str, list[Plan]] = {}
+        #: Plans of rules without fluent body atoms: their instances hold in every state.
+        self.unconditional: list[Plan] = []
+        #: Plans that derive a derived predicate's facts from nothing (a full join), for
+        #: the exact evaluation of derived predicates in a state (:mod:`.closure`).
+        self.derivations: list[Plan] = []
+        #: Index keys ``(predicate, positions)`` the plans look facts up with.
+        self.fluent_indexes: dict[str, list[tuple[int, ...]]] = {}
+        self.static_indexes: dict[tuple[str, tuple[int, ...]], dict[tuple[str, ...], list]] = {}
+        #: The goal facts a state can change; explorations stop once all are settled.
+        self.fluent_goal: tuple[GroundAtom, ...] = ()
+        #: Goal facts of static predicates that do not hold: no state reaches the goal.
+        self.static_goal_missing = 0
+
+    def _index_static_facts(self) -> None:
+        """Fills the static indexes the plans use (once every rule is added)."""
+        for (predicate, positions), index in self.static_indexes.items():
+            for fact in self.static_facts.get(predicate, ()):
+                index.setdefault(tuple([fact[i] for i in positions]), []).append(fact)
+
+    def cost_of(self, rule: Rule, slots: list[str]) -> int:
+        """The cost of the instance of ``rule`` with these slot values."""
+        if rule.cost is not None:
+            return rule.cost
+        function, arguments = rule.cost_term
+        term = (function, *[slots[i] for i in arguments])
+        value = self.numeric.get(term)
+        if value is None:
+            name = self.action_names[rule.action]
+            raise InputError(
+                self.source, None, None,
+                f"no initial value for ({' '.join(term)}), the cost of {name!r}",
+            )
+        return value
+
+
+
+    def _add(
+        self,
+        clause: Clause,
+        params: tuple[Parameter, ...],
+        heads: tuple[Atom, ...],
+        action: int,
+        operator: int,
+        cost: int | Atom,
+        line: int | None = None,
+        identity: int | None = None,
+    ) -> None:
+        """A rule for ``clause`` (over ``params`` and its own variables) with these
+        ``heads``, for ``action`` (or :data:`AXIOM`) at ``cost``: a number, or a numeric
+        function term over the rule's variables (``line`` locates it in messages)."""
+        everything = params + clause.params
+        slot = {param.name: i for i, param in enumerate(everything)}
+        mentioned = [arg for atom in (*clause.positive, *clause.negative, *heads) for arg in atom.args]
+        if isinstance(cost, Atom):
+            mentioned += cost.args
+        for term in mentioned:
+            if term not in slot:
+                if term.startswith("?"):
+                    raise InputError(self.source, line, None, f"variable {term} is not a parameter")
+                slot[term] = len(slot)
+        unique = dict.fromkeys(atom.predicate for atom in heads)
+        names = {predicate: i for i, predicate in enumerate(unique, start=len(slot))}
+        template = (None,) * len(everything) + tuple(list(slot)[len(everything):]) + tuple(names)
+        body = [atom for atom in clause.positive if atom.predicate != "="]
+        checks = [Check("=", (slot[a.args[0]], slot[a.args[1]]))
+                  for a in clause.positive if a.predicate == "="]  # fmt: skip
+        checks += [Check("!=", (slot[a.args[0]], slot[a.args[1]]))
+                   for a in clause.negative if a.predicate == "="]  # fmt: skip
+        checks += [
+            Check("absent", tuple(slot[arg] for arg in a.args), a.predicate)
+            for a in clause.negative
+            if a.predicate in self.static
+        ]
+        for i, param in enumerate(everything):
+            domain = frozenset(self.objects_of(param.types))
+            if domain != self.objects:
+                checks.append(Check("type", (i,), domain=domain))
+        cost_term: tuple[str, tuple[int, ...]] = ("", ())
+        if isinstance(cost, Atom):
+            cost_term = (cost.predicate, tuple(slot[a] for a in cost.args))
+        predicates = [atom.predicate for atom in body]
+        rule = Rule(
+            number=len(self.rules),
+            template=template,
+            heads=tuple((a.predicate, tuple(slot[arg] for arg in a.args)) for a in heads),
+            negative=tuple(
+                (a.predicate, tuple(slot[arg] for arg in a.args))
+                for a in clause.negative
+                if a.predicate != "=" and a.predicate not in self.static
+            ),
+            action=action,
+            arity=len(params) if action != AXIOM else 0,
+            operator=operator,
+            identity=len(everything) if identity is None else identity,
+            cost=None if isinstance(cost, Atom) else cost,
+            cost_term=cost_term,
+            repeated_predicates=len(set(predicates)) < len(predicates),
+            makers=tuple(
+                _maker(a.predicate, names[a.predicate], tuple(slot[arg] for arg in a.args))
+                for a in heads
+            ),
+        )
+        self.rules.append(rule)
+        atoms = [(a.predicate, tuple(slot[arg] for arg in a.args)) for a in body]
+        domains = {i: self.objects_of(p.types) for i, p in enumerate(everything)}
+        fluent = [i for i, (predicate, _) in enumerate(atoms) if predicate not in self.static]
+        if action == AXIOM:
+            self.derivations.append(self._plan(rule, atoms, None, checks, domains, len(everything)))
+        if not fluent:
+            self.unconditional.append(self._plan(rule, atoms, None, checks, domains, len(everything)))
+        for position in fluent:
+            plan = self._plan(rule, atoms, position, checks, domains, len(everything))
+            self.triggers.setdefault(atoms[position][0], []).append(plan)
+
+    def _plan(
+        self,
+        rule: Rule,
+        atoms: list[tuple[str, tuple[int, ...]]],
+        trigger: int | None,
+        checks: list[Check],
+        domains: dict[int, tuple[str, ...]],
+        variables: int,
+    ) -> Plan:
+        """The join order: the trigger first, then greedily the atom with the fewest
+        expected candidates: none for an atom whose arguments are all bound (a test),
+        else the average bucket size of its index over the static facts for a static
+        atom. Which facts of a fluent atom a state settles is not known up front: its
+        bucket size lies between that over the initial state's facts and the product of
+        its unbound variables' domain sizes (what exploration may reach), and their
+        geometric mean is the estimate. Static atoms go first among equals: they filter
+        without growing."""
+        bound = set(range(variables, len(rule.template)))  # constants
+        pending = list(checks)
+        first = None
+        if trigger is not None:
+            first = self._step(atoms[trigger], bound, pending, fluent=True, before=False, trigger=True)
+        rest = [i for i in range(len(atoms)) if i != trigger]
+        steps: list[Step] = []
+        bound_before: list[set[int]] = []
+        while rest:
+            def expected(i: int) -> tuple[float, bool]:
+                predicate, terms = atoms[i]
+                positions = tuple(p for p, t in enumerate(terms, start=1) if t in bound)
+                if len(positions) == len(terms):
+                    return 0, predicate not in self.static
+                if predicate in self.static:
+                    return self._bucket_size(predicate, positions), False
+                reachable = 1.0
+                for slot in {t for t in terms if t not in bound}:
+                    reachable *= len(domains[slot])
+                initial = max(self._bucket_size(predicate, positions), 1.0)
+                return (initial * reachable) ** 0.5, True
+
+            best = min(rest, key=expected)
+            rest.remove(best)
+            predicate, terms = atoms[best]
+            is_fluent = predicate not in self.static
+            previous = steps[-1] if steps else first
+            if not is_fluent and previous is not None and all(t in bound for t in terms):
+                # A static atom with every argument bound is a membership test, run with
+                # the previous step's tests rather than as a join level of its own.
+                previous.checks += (Check("present", terms, predicate),)
+                continue
+            before = trigger is not None and is_fluent and best < trigger
+            bound_before.append(set(bound))
+            steps.append(self._step(atoms[best], bound, pending, is_fluent, before))
+        free = tuple(i for i in range(variables) if i not in bound)
+        probes: list[tuple[int, ...]] = []
+        probed: set[int] = set()
+        for depth, known in enumerate(bound_before):
+            ready = [
+                later
+                for later in range(depth + 1, len(steps))
+                if steps[later].fluent and later not in probed
+                and all(slot in known for slot in steps[later].key)
+            ]
+            probed.update(ready)
+            probes.append(tuple(ready))
+        return Plan(
+            rule=rule,
+            trigger=first,
+            steps=tuple(steps),
+            free=free,
+            domains=tuple(domains[i] for i in free),
+            final_checks=tuple(pending),
+            probes=tuple(probes),
+        )
+
+    def _bucket_size(self, predicate: str, positions: tuple[int, ...]) -> float:
+        """The average number of static (or initial) facts of ``predicate`` per value of
+        the arguments at ``positions``."""
+        facts = self.static_facts.get(predicate) or self.initial_facts.get(predicate, ())
+        keys = {tuple([fact[i] for i in positions]) for fact in facts}
+        return len(facts) / max(len(keys), 1)
+
+    def _step(
+        self,
+        atom: tuple[str, tuple[int, ...]],
+        bound: set[int],
+        pending: list[Check],
+        fluent: bool,
+        before: bool,
+        trigger: bool = False,
+    ) -> Step:
+        predicate, terms = atom
+        positions, key, binds, repeats = [], [], [], []
+        newly: set[int] = set()
+        for position, term in enumerate(terms, start=1):
+            if term in bound and not trigger:
+                positions.append(position)
+                key.append(term)
+            elif term in bound or term in newly:
+                repeats.append((position, term))
+            else:
+                binds.append((position, term))
+                newly.add(term)
+        bound |= newly
+        ready = [check for check in pending if all(s in bound for s in check.slots)]
+        for check in ready:
+            pending.remove(check)
+        if not trigger:
+            table = self.fluent_indexes if fluent else None
+            if table is not None:
+                table.setdefault(predicate, [])
+                if tuple(positions) not in table[predicate]:
+                    table[predicate].append(tuple(positions))
+            else:
+                self.static_indexes.setdefault((predicate, tuple(positions)), {})
+        return Step(
+            predicate=predicate,
+            positions=tuple(positions),
+            key=tuple(key),
+            binds=tuple(binds),
+            repeats=tuple(repeats),
+            checks=tuple(ready),
+            fluent=fluent,
+            before_trigger=before,
+        )
+
+    def instances(self, plan: Plan, slots: list[str]) -> Iterator[None]:
+        """Complete a binding whose atoms are all matched: every assignment of the free
+        slots (over their types' objects) that passes the final checks, written into
+        ``slots``; one ``None`` per assignment."""
+        if not plan.free:
+            if passes(plan.final_checks, slots, self.static_facts):
+                yield None
+            return
+        for values in product(*plan.domains):
+            for slot, value in zip(plan.free, values):
+                slots[slot] = value
+            if passes(plan.final_checks, slots, self.static_facts):
+                yield None
+
+
+class Program(RuleProgram):
+    """The relaxed program of a PDDL task (see the module docstring)."""
+
+    def __init__(self, task: PddlTask) -> None:
+        initial = [(atom.predicate, *atom.args) for atom in task.problem.init]
+        super().__init__(static_predicates(task), initial, task.objects_of, task.problem_path)
+        self.task = task
+        self.action_names = [action.name for action in task.domain.actions]
+        self.derived = {rule.head.predicate for rule in task.domain.derived}
+        self.numeric = {
+            (term.predicate, *term.args): value for term, value in task.problem.numeric
+        }
+        normalizer = Normalizer(task)
+        for number, action in enumerate(task.domain.actions):
+            for operator, clause in enumerate(normalizer.clauses(action.precondition)):
+                cost = self._action_cost(action)
+                self._add(clause, action.params, action.add, number, operator, cost, action.line)
+                for effect in action.conditional:
+                    if not effect.add:
+                        continue
+                    for condition in normalizer.clauses(effect.condition):
+                        self._add(
+                            clause.join(Clause(effect.params)).join(condition),
+                            action.params,
+                            effect.add,
+                            number,
+                            operator,
+                            cost,
+                            action.line,
+                            identity=len(action.params) + len(clause.params),
+                        )
+        for derived in task.domain.derived:
+            for clause in normalizer.clauses(derived.body):
+                self._add(clause, derived.params, (derived.head,), AXIOM, 0, 0)
+        goal_clauses = normalizer.clauses(task.problem.goal)
+        self.goal: tuple[GroundAtom, ...]
+        if len(goal_clauses) == 1 and not goal_clauses[0].params and not goal_clauses[0].negative:
+            atoms = [atom for atom in goal_clauses[0].positive if atom.predicate != "="]
+            self.goal = tuple(dict.fromkeys((atom.predicate, *atom.args) for atom in atoms))
+        else:
+            self.goal = (GOAL,)
+            for clause in goal_clauses:
+                self._add(clause, (), (Atom(GOAL[0], ()),), AXIOM, 0, 0)
+        done = 0
+        while done < len(normalizer.auxiliary):  # their bodies may add more
+            auxiliary = normalizer.auxiliary[done]
+            done += 1
+            self.derived.add(auxiliary.head.predicate)
+            for clause in normalizer.clauses(auxiliary.body):
+                self._add(clause, auxiliary.params, (auxiliary.head,), AXIOM, 0, 0)
+        self.derived.add(GOAL[0])
+        self.static_goal_missing = sum(
+            1
+            for fact in self.goal
+            if fact[0] in self.static and fact not in self.static_facts[fact[0]]
+        )
+        self.fluent_goal = tuple(fact for fact in self.goal if fact[0] not in self.static)
+        self._index_static_facts()
+
+    def _action_cost(self, action: Action) -> int | Atom:
+        """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
+        if not self.task.problem.minimize_cost:
+            return 1
+        return 0 if action.cost is None else action.cost
+
+def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list], GroundAtom]:
+    if not terms:
+        atom = (name,)
+        return lambda slots: atom
+    return itemgetter(name_slot, *terms)
+
+
+def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[GroundAtom]]) -> bool:
+    for check in checks:
+        kind = check.kind
+        if kind == "type":
+            if slots[check.slots[0]] not in check.domain:
+                return False
+        elif kind == "!=":
+            if slots[check.slots[0]] == slots[check.slots[1]]:
+                return False
+        elif kind == "=":
+            if slots[check.slots[0]] != slots[check.slots[1]]:
+                return False
+        elif ((check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]) != (
+            kind == "present"
+        ):
+            return False
+    return True
