@@ -28,6 +28,7 @@ from strips_framework.user_files import is_file
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
     from strips_framework.macrops.macrop import Library
+    from strips_framework.observer import SearchObserver
     from strips_framework.pddl import PddlTask
     from strips_framework.progress import Progress
     from strips_framework.result import Result
@@ -48,18 +49,23 @@ class Planner(Record):
     config: Config
     #: Counts the search's scores for a progress line (the CLI sets it on a terminal).
     progress: Progress | None
+    #: Watch the search (the explorer page, the VS Code search debugger's feed); none by
+    #: default, and then the search runs unwrapped (see :mod:`strips_framework.observer`).
+    observers: tuple[SearchObserver, ...]
 
-    __slots__ = ("registry", "config", "progress")
+    __slots__ = ("registry", "config", "progress", "observers")
 
     def __init__(
         self,
         registry: Registry,
         config: Config,
         progress: Progress | None = None,
+        observers: tuple[SearchObserver, ...] = (),
     ) -> None:
         self.registry = registry
         self.config = config
         self.progress = progress
+        self.observers = tuple(observers)
 
     @classmethod
     def create(
@@ -114,7 +120,7 @@ class Planner(Record):
         config = self.config.for_pddl()
         if config is self.config:
             return self
-        return Planner(self.registry, config, self.progress).checked()
+        return Planner(self.registry, config, self.progress, self.observers).checked()
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
@@ -209,15 +215,20 @@ class Planner(Record):
 
             use = self.config.section(MacroUse, "macrops")
             relevance = MacroRelevance.of(relevance, library, use)
-        return strategy.search(
+        if self.progress is not None:
+            evaluator = self.progress.evaluator(evaluator)
+        for observer in self.observers:
+            evaluator = observer.evaluator(evaluator)
+        result = strategy.search(
             problem,
             build(self.registry, "prover"),
             build(self.registry, "difference"),
             relevance,
-            evaluator if self.progress is None else self.progress.evaluator(evaluator),
+            evaluator,
             self.config.limits,
             clock or Clock(self.config.limits.time),
         )
+        return self._finished(result)
 
     def solve_task(self, task: GroundTask, clock: Clock | None = None) -> Result:
         """Search ``task`` with the configured ground-task strategy and heuristic; the
@@ -233,7 +244,14 @@ class Planner(Record):
         estimator = heuristic.for_task(task)
         if self.progress is not None:
             estimator = self.progress.estimator(estimator)
-        return strategy.search_task(task, estimator, self.config.limits, clock)
+        for observer in self.observers:
+            estimator = observer.estimator(estimator, task)
+        return self._finished(strategy.search_task(task, estimator, self.config.limits, clock))
+
+    def _finished(self, result: Result) -> Result:
+        for observer in self.observers:
+            observer.finished(result)
+        return result
 
     def _require_world_model(self, problem: Path | str) -> None:
         if self.searches_ground_tasks:
