@@ -39,6 +39,11 @@ def _action(name: str, time: float) -> dict[str, Any]:
     return {"actionName": name.strip("()"), "shotCounter": 0, "earliestTime": time, "kind": KIND}
 
 
+def _number(value: float) -> float | int:
+    """A whole number as an int (the plans' costs usually are)."""
+    return int(value) if value.is_integer() else value
+
+
 class DebuggerFeed(Watcher):
     """Posts the search's states to the search debugger at ``url``."""
 
@@ -106,7 +111,7 @@ class DebuggerFeed(Watcher):
         return {
             "id": str(number),
             "parentId": None if parent == NO_PARENT else str(parent),
-            "g": self.g[number],
+            "g": _number(self.g[number]),
             "earliestTime": len(steps),
             "appliedAction": head[-1] if head else None,
             "planHead": head,
@@ -121,7 +126,7 @@ class DebuggerFeed(Watcher):
         if math.isfinite(h):
             operators = self.task.operators
             message["h"] = h
-            message["totalMakespan"] = self.g[number] + h
+            message["totalMakespan"] = _number(self.g[number] + h)
             message["helpfulActions"] = [
                 {"actionName": operators[op].name.strip("()"), "kind": KIND} for op in preferred
             ]

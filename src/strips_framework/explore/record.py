@@ -78,6 +78,16 @@ class SearchRecord(Watcher):
     def finished(self, result: Any) -> None:
         self.result = result
 
+    def _repr_html_(self) -> str:
+        """The explorer page in a notebook, in a frame of its own."""
+        from html import escape
+
+        from strips_framework.explore.page import explorer_page
+
+        page = explorer_page(self.document("search"))
+        return (f'<iframe srcdoc="{escape(page)}" style="width:100%;height:640px;'
+                'border:1px solid #ccc"></iframe>')
+
     def node_scored(self, node: Any, score: float, parts: Mapping[str, float] | None) -> None:
         notes = self.notes.get(id(node))
         if notes is None:
