@@ -70,6 +70,21 @@ def open_page(launched: Any, path: Path, width: int = 1300, height: int = 800) -
     return page, problems
 
 
+def screenshot(page: Any, path: Path) -> Path:
+    """``page`` as a PNG in a palette of 256 colours (pages of flat colours lose nothing
+    visible and the file shrinks by half or more; pillow comes with matplotlib, the
+    bench extra)."""
+    page.screenshot(path=str(path))
+    try:
+        from PIL import Image
+    except ImportError:
+        return path
+    with Image.open(path) as image:
+        small = image.convert("RGB").quantize(colors=256)
+    small.save(path, optimize=True)
+    return path
+
+
 def solve(arguments: list[str]) -> None:
     from strips_framework.cli.main import main
 
@@ -86,8 +101,7 @@ def _explorer_shot(launched: Any, folder: Path, task: str, node: int, height: in
     page.click("#fit")
     x, y = page.evaluate(f"window.explorer.position({node})")
     page.mouse.click(x, y)
-    shot = folder / f"explorer-{task}.png"
-    page.screenshot(path=str(shot))
+    shot = screenshot(page, folder / f"explorer-{task}.png")
     assert not problems, problems
     return shot
 
@@ -106,8 +120,7 @@ def triangle_table_light(launched: Any, folder: Path) -> Path:
     solve(["table", str(ROOT / "examples/robot-world/light.strips"), str(plan), "--html", str(table)])
     page, problems = open_page(launched, table, 1500, 560)
     page.click("#kernels button[data-kernel='all']")
-    shot = folder / "triangle-table-light.png"
-    page.screenshot(path=str(shot))
+    shot = screenshot(page, folder / "triangle-table-light.png")
     assert not problems, problems
     return shot
 
@@ -119,8 +132,7 @@ def report_16(launched: Any, folder: Path) -> Path:
     solve(["bench", "report", str(results), "-o", str(folder / "report16")])
     page, problems = open_page(launched, folder / "report16" / "report.html", 1300, 1700)
     page.wait_for_selector("#tasks tbody tr")
-    shot = folder / "report-16-configs.png"
-    page.screenshot(path=str(shot))
+    shot = screenshot(page, folder / "report-16-configs.png")
     assert not problems, problems
     return shot
 
