@@ -123,6 +123,8 @@ def test_forward_sample_is_bounded(monkeypatch):
     plain = [n for n in document["nodes"] if not n["path"]]
     # The sample, and the ancestors that connect it to the root: far fewer than reached.
     assert len(record.kept) == 6 and len(document["nodes"]) < reached / 2
+    # A* estimates a state before numbering it: each shown state still has its h.
+    assert all(isinstance(n["h"], (int, float)) for n in document["nodes"])
     assert any(n["id"] > 3 for n in plain), "the later states are sampled too"
 
 
