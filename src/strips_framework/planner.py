@@ -72,6 +72,7 @@ class Planner(Record):
         cls,
         config: Config | Mapping[str, Any] | None = None,
         extra_plugins: Iterable[object] = (),
+        observers: Iterable[SearchObserver] = (),
     ) -> Planner:
         """A planner whose config is checked at once: every component the strategy uses is
         registered, its options valid and the chosen implementations fit together (each has
@@ -79,13 +80,15 @@ class Planner(Record):
 
         ``config`` is a :class:`Config`, or a mapping in the shape of the TOML file
         (``{"strategy": "astar", "heuristic": {"name": "lmcut"}}``); ``None`` takes the
-        defaults, the same as ``strips solve`` without ``--config``.
+        defaults, the same as ``strips solve`` without ``--config``. ``observers`` watch
+        every search (see :mod:`strips_framework.observer`; the explorer's
+        :class:`~strips_framework.explore.record.SearchRecord`).
         """
         if config is None:
             config = Config.default()
         elif not isinstance(config, Config):
             config = Config.from_dict(dict(config), "<api>")
-        return cls(Registry.from_plugins(extra_plugins), config).checked()
+        return cls(Registry.from_plugins(extra_plugins), config, observers=tuple(observers)).checked()
 
     def checked(self) -> Planner:
         """This planner, after building each component it uses, and every one the config

@@ -24,7 +24,7 @@ BLOCKS = ROOT / "examples/pddl/blocksworld"
 
 def recorded(path: Path, domain: Path | None = None, config: dict | None = None) -> SearchRecord:
     record = SearchRecord()
-    planner = Planner.create(config)._replace(observers=(record,))
+    planner = Planner.create(config, observers=[record])
     planner.run(path, domain)
     return record
 

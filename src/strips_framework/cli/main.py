@@ -263,7 +263,8 @@ def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> Non
         if result.tree is None:
             warnings.warn(
                 f"--tree: the {result.statistics.family} search keeps no tree to draw "
-                f"(only the world-model strategies do); {args.tree} not written",
+                f"(only the world-model strategies do; --explore shows its states); "
+                f"{args.tree} not written",
                 stacklevel=1,
             )
         else:
