@@ -97,6 +97,7 @@ def test_forward_document_samples_states_and_keeps_the_best_h_curve():
     path = [node for node in document["nodes"] if node["path"]]
     assert len(path) == len(record.result.plan) + 1
     assert path[-1]["h"] == 0
+    assert [n["g"] for n in path] == list(range(len(path)))  # unit costs, along the plan
     # A state's ADDED/DELETED facts rebuild it from the initial state.
     task = record.task
     init = {task.facts[i] for i in range(len(task.facts)) if task.init >> i & 1}

@@ -260,7 +260,8 @@
         : list(diff.map((i) => el("code", { text: S[i] })), "detail-diff")));
     if (n.relevant) {
       out.push(section("Relevant operator instances (when first queued)",
-        list(n.relevant.map(([o, r]) => el("span", {}, el("code", { text: S[o] }), " leaves ", el("code", { text: S[r] }))), "detail-relevant")));
+        list(n.relevant.map(([o, r]) => el("span", {}, el("code", { text: S[o] }),
+          S[r] === "false" ? " completes that proof (empty resolvent)" : " leaves ", S[r] === "false" ? "" : el("code", { text: S[r] }))), "detail-relevant")));
     }
     return out;
   }

@@ -146,6 +146,7 @@ class SearchRecord(Watcher):
                 children[space.parents[number]] += 1
         on_path = set(path)
         init = task.init
+        g = _path_costs(space, shown)
         nodes = []
         for number in sorted(shown):
             state, parent = space.states[number], space.parents[number]
@@ -153,7 +154,7 @@ class SearchRecord(Watcher):
                 "id": number,
                 "parent": parent if parent in shown else None,
                 "op": strings(task.operators[space.operators[number]].name) if parent != NO_PARENT else None,
-                "g": finite(self.g[number]),
+                "g": g[number],
                 "h": finite(self.h[number]) if not math.isnan(self.h[number]) else "-",
                 "add": strings.all(_facts(task, state & ~init)),
                 "del": strings.all(_facts(task, init & ~state)),
@@ -170,6 +171,22 @@ class SearchRecord(Watcher):
             "expansions": self.expansions,
             "evaluations": self.evaluations,
         }
+
+
+def _path_costs(space: Any, numbers: Any) -> dict[int, float]:
+    """g of each of ``numbers`` along its final path (A* may have found a cheaper path,
+    and reparented the state, after it was first reached)."""
+    known: dict[int, float] = {}
+    for number in numbers:
+        chain = []
+        while number != NO_PARENT and number not in known:
+            chain.append(number)
+            number = space.parents[number]
+        cost = known.get(number, 0.0)
+        for step in reversed(chain):
+            cost += space.costs[space.operators[step]] if space.parents[step] != NO_PARENT else 0
+            known[step] = cost
+    return known
 
 
 def _facts(task: Any, mask: int) -> list[str]:
