@@ -129,6 +129,50 @@ def test_forward_sample_is_bounded(monkeypatch):
     assert any(n["id"] > 3 for n in plain), "the later states are sampled too"
 
 
+def test_macrop_uses_are_marked(tmp_path):
+    library = tmp_path / "robot.lib"
+    robot = ROOT / "examples/robot-world"
+    figures.solve(["learn", str(robot / "light.strips"), str(robot / "boxes.strips"), "-o", str(library)])
+    record = SearchRecord()
+    planner = Planner.create(observers=[record])
+    planner.run(FIVE, library=library)
+    document = record.document("five-goals")
+    strings = document["strings"]
+    used = [row for row in document["nodes"] if "macrop" in row]
+    assert used
+    by_id = {node.id: node for node in record.result.tree.nodes}
+    for row in used:
+        node = by_id[row["id"]]
+        assert [strings[i] for i in row["macrop"]] == [str(step) for step in node.applied.steps()]
+        assert len(row["macrop"]) > 1
+    plain = [row for row in document["nodes"] if row["applied"] is not None and "macrop" not in row]
+    assert all(len(by_id[row["id"]].applied.steps()) == 1 for row in plain)
+
+
+def test_fields_a_strategy_adds_are_shown(monkeypatch):
+    """A node field the page does not know (an ABSTRIPS level, say) is carried by name."""
+    import attrs
+
+    from strips_framework.explore import record as record_module
+
+    record = recorded(LIGHT)
+    real = record_module._fields
+    monkeypatch.setattr(record_module, "_fields",
+                        lambda node: real(node) | {"level": node.id % 3})
+    rows = record.document("light")["nodes"]
+    assert [row["extra"]["level"] for row in rows] == [str(i % 3) for i in range(len(rows))]
+    # A strategy's own node class with one more field: the field is found by name.
+    from strips_framework.means_ends.node import Node
+
+    @attrs.define(eq=False)
+    class LevelNode(Node):
+        level: int = 0
+
+    node = record.result.tree.nodes[0]
+    mine = LevelNode(node.id, node.model, node.goals, None, level=2)
+    assert real(mine)["level"] == 2 and "level" not in real(node)
+
+
 def test_explorer_page_escapes_its_data():
     document = {"title": "</script><b>", "status": "solved", "plan": [], "statistics": {},
                 "kind": "none", "nodes": [], "strings": ["</script>"]}

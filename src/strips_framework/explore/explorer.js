@@ -42,7 +42,9 @@
     slot += 1;  // a gap between the trees of several roots
   }
   const modelName = (n) => (forward ? "s" + n.id : "M" + n.model);
-  const label = (n) => (forward ? "s" + n.id + (n.h === "-" || n.h === null ? "" : " h=" + n.h) : "n" + n.id + " " + modelName(n));
+  // A field named "level" (ABSTRIPS) joins the label; any other shows in the panel.
+  const label = (n) => (forward ? "s" + n.id + (n.h === "-" || n.h === null ? "" : " h=" + n.h)
+    : "n" + n.id + " " + modelName(n) + (n.extra && n.extra.level !== undefined ? " L" + n.extra.level : ""));
 
   // View: world coordinates (x in slots, y in levels) to canvas pixels.
   const canvas = $("tree");
@@ -95,8 +97,8 @@
       if (forward && n.h === null) fill = "#d7ccc8";
       if (matches.has(n)) fill = "#f9e79f";
       ctx.fillStyle = fill;
-      ctx.strokeStyle = n === selected ? "#1f618d" : n.path ? "#c0392b" : "#777";
-      ctx.lineWidth = n === selected ? 3 : n.path ? 2 : 1;
+      ctx.strokeStyle = n === selected ? "#1f618d" : n.macrop ? "#7d3c98" : n.path ? "#c0392b" : "#777";
+      ctx.lineWidth = n === selected ? 3 : n.path || n.macrop ? 2.5 : 1;
       if (full) {
         ctx.fillRect(sx - bw / 2, sy - bh / 2, bw, bh); ctx.strokeRect(sx - bw / 2, sy - bh / 2, bw, bh);
         ctx.fillStyle = "#111"; ctx.fillText(label(n), sx, sy, bw - 4);

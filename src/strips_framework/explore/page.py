@@ -14,7 +14,8 @@ _LEGEND = {
         '<span style="background:#d5f5e3">first goal proved</span>'
         '<span style="background:#fadbd8">solution path</span>'
         '<span style="background:#f9e79f">search match</span>'
-        " bold edges: operator applied; thin: subgoal"
+        '<span style="border-color:#7d3c98;color:#7d3c98">MACROP applied</span>'
+        " dark edges: operator applied; light: subgoal"
     ),
     "forward": (
         '<span style="background:#fadbd8">solution path</span>'
