@@ -84,6 +84,8 @@ class SearchRecord(Watcher):
 
         from strips_framework.explore.page import explorer_page
 
+        if self.result is None:
+            return "<p>no search recorded yet: pass this record to <code>Planner.create(observers=[...])</code> and run</p>"
         page = explorer_page(self.document("search"))
         return (f'<iframe srcdoc="{escape(page)}" style="width:100%;height:640px;'
                 'border:1px solid #ccc"></iframe>')
