@@ -111,6 +111,18 @@ def test_forward_document_samples_states_and_keeps_the_best_h_curve():
     assert best[-1] == 0
 
 
+@pytest.mark.parametrize("strategy", ["lazy-gbfs", "gbfs", "astar", "ehc"])
+def test_compiled_and_reference_loops_are_watched_alike(strategy, monkeypatch):
+    """The compiled search loops and their pure-Python references report the same
+    states, estimates and best-h curve to the explorer."""
+    config = {"strategy": strategy, "heuristic": "lmcut" if strategy == "astar" else "ff"}
+    compiled = recorded(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl", config).document("p4")
+    monkeypatch.setenv("STRIPS_PURE_PYTHON", "1")
+    reference = recorded(BLOCKS / "p4.pddl", BLOCKS / "domain.pddl", config).document("p4")
+    assert compiled["nodes"] == reference["nodes"] and compiled["curve"] == reference["curve"]
+    assert len(compiled["nodes"]) > 1
+
+
 def test_forward_sample_is_bounded(monkeypatch):
     import strips_framework.explore.record as record_module
 
