@@ -83,8 +83,9 @@
       if (!n.up) continue;
       if (!visible(n) && !visible(n.up)) continue;
       const [ax, ay] = toScreen(n.up.x, n.up.y), [bx, by] = toScreen(n.x, n.y);
-      ctx.strokeStyle = n.path && n.up.path ? "#c0392b" : (n.applied !== undefined && n.applied !== null) || n.op ? "#555" : "#aaa";
-      ctx.lineWidth = n.path && n.up.path ? 2.5 : (n.applied !== null && n.applied !== undefined ? 1.5 : 1);
+      const applied = n.applied !== undefined && n.applied !== null;  // world models: not a subgoal
+      ctx.strokeStyle = n.path && n.up.path ? "#c0392b" : applied || forward ? "#555" : "#aaa";
+      ctx.lineWidth = n.path && n.up.path ? 2.5 : applied ? 1.5 : 1;
       ctx.beginPath(); ctx.moveTo(ax, ay); ctx.lineTo(bx, by); ctx.stroke();
     }
     ctx.font = "11px sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle";
