@@ -16,5 +16,4 @@ def launched():
     reason = figures.unavailable()
     if reason is not None:
         pytest.skip(reason)
-    with figures.browser() as browser:
-        yield browser
+    return figures.shared_browser()

@@ -8,6 +8,7 @@ driven by Playwright, with no browser download and no network."""
 
 from __future__ import annotations
 
+import atexit
 import shutil
 import sys
 from collections.abc import Iterator
@@ -37,6 +38,27 @@ def unavailable() -> str | None:
     if chromium() is None:
         return "Debian's chromium is not installed (apt-get install chromium)"
     return None
+
+
+_shared: list[Any] = []
+
+
+def shared_browser() -> Any:
+    """One headless Chromium for the whole test process (Playwright's sync API allows one
+    driver per thread, so the tests and the benchmarks share it), closed at exit."""
+    if not _shared:
+        from playwright.sync_api import sync_playwright
+
+        driver = sync_playwright().start()
+        _shared[:] = [driver, driver.chromium.launch(executable_path=chromium(), args=ARGS)]
+        atexit.register(_close_shared)
+    return _shared[1]
+
+
+def _close_shared() -> None:
+    driver, launched = _shared
+    launched.close()
+    driver.stop()
 
 
 @contextmanager
