@@ -78,18 +78,26 @@
     const [x0, y0] = toWorld(-50, -50), [x1, y1] = toWorld(w + 50, h + 50);
     const visible = (n) => n.x >= x0 && n.x <= x1 && n.y >= y0 && n.y <= y1;
     const full = detailed();
-    ctx.lineWidth = 1;
+    // Edges and dots are batched into one path per style: one stroke for thousands.
+    const batches = new Map();
+    const batch = (key) => { let p = batches.get(key); if (!p) { p = new Path2D(); batches.set(key, p); } return p; };
     for (const n of nodes) {
       if (!n.up) continue;
       if (!visible(n) && !visible(n.up)) continue;
       const [ax, ay] = toScreen(n.up.x, n.up.y), [bx, by] = toScreen(n.x, n.y);
       const applied = n.applied !== undefined && n.applied !== null;  // world models: not a subgoal
-      ctx.strokeStyle = n.path && n.up.path ? "#c0392b" : applied || forward ? "#555" : "#aaa";
-      ctx.lineWidth = n.path && n.up.path ? 2.5 : applied ? 1.5 : 1;
-      ctx.beginPath(); ctx.moveTo(ax, ay); ctx.lineTo(bx, by); ctx.stroke();
+      const style = n.path && n.up.path ? "#c0392b|2.5" : applied ? "#555|1.5" : forward ? "#555|1" : "#aaa|1";
+      const path = batch(style);
+      path.moveTo(ax, ay); path.lineTo(bx, by);
+    }
+    for (const [style, path] of batches) {
+      const [colour, width] = style.split("|");
+      ctx.strokeStyle = colour; ctx.lineWidth = +width; ctx.stroke(path);
     }
     ctx.font = "11px sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle";
     const [bw, bh] = boxSize();
+    const r = Math.max(2, Math.min(bw, bh, 12) / 2);
+    const dots = new Map();
     for (const n of nodes) {
       if (!visible(n)) continue;
       const [sx, sy] = toScreen(n.x, n.y);
@@ -97,16 +105,24 @@
       if (!forward && n.diff === null) fill = "#d5f5e3";
       if (forward && n.h === null) fill = "#d7ccc8";
       if (matches.has(n)) fill = "#f9e79f";
-      ctx.fillStyle = fill;
-      ctx.strokeStyle = n === selected ? "#1f618d" : n.macrop ? "#7d3c98" : n.path ? "#c0392b" : "#777";
-      ctx.lineWidth = n === selected ? 3 : n.path || n.macrop ? 2.5 : 1;
+      const stroke = n === selected ? "#1f618d" : n.macrop ? "#7d3c98" : n.path ? "#c0392b" : "#777";
+      const width = n === selected ? 3 : n.path || n.macrop ? 2.5 : 1;
       if (full) {
+        ctx.fillStyle = fill; ctx.strokeStyle = stroke; ctx.lineWidth = width;
         ctx.fillRect(sx - bw / 2, sy - bh / 2, bw, bh); ctx.strokeRect(sx - bw / 2, sy - bh / 2, bw, bh);
         ctx.fillStyle = "#111"; ctx.fillText(label(n), sx, sy, bw - 4);
       } else {
-        const r = Math.max(2, Math.min(bw, bh, 12) / 2);
-        ctx.beginPath(); ctx.arc(sx, sy, n === selected ? r + 2 : r, 0, 2 * Math.PI); ctx.fill(); ctx.stroke();
+        const key = fill + "|" + stroke + "|" + width;
+        let path = dots.get(key);
+        if (!path) { path = new Path2D(); dots.set(key, path); }
+        const radius = n === selected ? r + 2 : r;
+        path.moveTo(sx + radius, sy); path.arc(sx, sy, radius, 0, 2 * Math.PI);
       }
+    }
+    for (const [key, path] of dots) {
+      const [fill, stroke, width] = key.split("|");
+      ctx.fillStyle = fill; ctx.strokeStyle = stroke; ctx.lineWidth = +width;
+      ctx.fill(path); ctx.stroke(path);
     }
   }
   function nodeAt(px, py) {
@@ -335,6 +351,7 @@
     select: (id) => select(byId.get(id), true),
     position: (id) => { const n = byId.get(id); const b = canvas.getBoundingClientRect(); const [x, y] = toScreen(n.x, n.y); return [b.left + x, b.top + y]; },
     count: nodes.length,
+    openedMs: performance.now(),  // since the navigation began: parse, layout, first drawing
     ready: true,
   };
 })();
