@@ -27,6 +27,37 @@ def test_sixteen_configurations_get_sixteen_styles():
     assert len(styles) == 40
 
 
+def test_cactus_with_sixteen_configurations_reads():
+    """Distinct lines, the legend beside the axes (not over the lines), whole problems."""
+    import matplotlib.pyplot as plt
+
+    from strips_framework.bench.plots import cactus_figure
+    from strips_framework.bench.summary import tasks
+
+    figure = cactus_figure(tasks(synthetic_bench.rows()), 10.0)
+    try:
+        axes = figure.axes[0]
+        lines = [line for line in axes.get_lines() if line.get_label().startswith("config-")]
+        assert len(lines) == 16
+        looks = {(line.get_color(), line.get_linestyle(), line.get_marker()) for line in lines}
+        assert len(looks) == 16
+        assert all(tick == int(tick) for tick in axes.get_yticks())
+    finally:
+        plt.close(figure)
+    figure = cactus_figure(tasks(synthetic_bench.rows(problems=1)), 10.0)  # 4 problems
+    try:
+        axes = figure.axes[0]
+        assert all(tick == int(tick) for tick in axes.get_yticks())  # no half problems
+        figure.canvas.draw()
+        legend = axes.get_legend().get_window_extent()
+        assert legend.x0 >= axes.get_window_extent().x1
+        # Best first: the legend lists configurations by problems solved.
+        solved = [int(text.get_text().split("(")[1].split("/")[0]) for text in axes.get_legend().get_texts()]
+        assert solved == sorted(solved, reverse=True)
+    finally:
+        plt.close(figure)
+
+
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     folder = tmp_path_factory.mktemp("report")

@@ -45,6 +45,11 @@ def _save(figure: plt.Figure, stem: Path) -> list[Path]:
 
 
 def cactus(found: Sequence[Task], time_limit: float, stem: Path) -> list[Path]:
+    """The cactus plot (:func:`cactus_figure`) as PNG and SVG."""
+    return _save(cactus_figure(found, time_limit), stem)
+
+
+def cactus_figure(found: Sequence[Task], time_limit: float) -> plt.Figure:
     """Problems solved (y) within a time (x, log scale), one step line per configuration,
     each in its own style (:func:`line_style`), the legend outside the axes (best first),
     and whole problems on the y axis."""
@@ -77,7 +82,7 @@ def cactus(found: Sequence[Task], time_limit: float, stem: Path) -> list[Path]:
     axes.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize="small",
                 ncol=columns, borderaxespad=0)
     figure.set_size_inches(7 + 2.6 * columns, max(4.5, 0.22 * len(names) / columns + 1))
-    return _save(figure, stem)
+    return figure
 
 
 def scatter(
