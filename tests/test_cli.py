@@ -40,6 +40,18 @@ def test_solve_json_plan_file_and_tree(tmp_path, capsys):
     assert dot.count("color=red") >= 9  # the solution path is highlighted
 
 
+def test_tree_goals_wrap_whole(tmp_path):
+    """A long precondition is wrapped onto more lines of the node's label, never cut."""
+    tree = tmp_path / "tree.dot"
+    assert main(["solve", str(ROOT / "examples/robot-world/light.strips"), "--tree", str(tree)]) == 0
+    label = next(line for line in tree.read_text().splitlines() if line.startswith("  n1 ["))
+    lines = label.split('label="', 1)[1].split('"', 1)[0].split("\\l")
+    assert all(len(line) <= 60 for line in lines) and "..." not in label
+    joined = " ".join(line.strip() for line in lines)
+    assert ("pre turnonlight(LIGHTSWITCH1): (exists n: TYPE(n, BOX) & ON(ROBOT, n) & "
+            "NEXTTO(n, LIGHTSWITCH1)) & TYPE(LIGHTSWITCH1, LIGHTSWITCH)") in joined
+
+
 def test_malformed_problem_is_reported_with_file_and_line(tmp_path, capsys):
     bad = tmp_path / "bad.strips"
     bad.write_text("problem bad\nconstants a\nfacts\n  ATR(a\ngoal ATR(a)\n")

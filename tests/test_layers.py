@@ -16,7 +16,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "src" / "strips_framework"
 #: Each top-level module or subpackage with its layer; higher numbers sit on lower ones.
 LAYER = {
     "errors": 0, "result": 0, "limits": 0, "user_files": 0, "progress": 0, "capabilities": 0,
-    "options": 0, "records": 0, "compiled": 0, "exit_codes": 0, "plan_steps": 0,
+    "options": 0, "records": 0, "compiled": 0, "exit_codes": 0, "plan_steps": 0, "observer": 0,
     "logic": 1,
     "worldmodel": 2, "formats": 2,
     "means_ends": 3, "pddl": 3,
@@ -25,7 +25,7 @@ LAYER = {
     "macrops": 6,
     "plugin": 7,
     "planner": 8, "learning": 8,
-    "cli": 9, "bench": 9, "testing": 9,
+    "cli": 9, "bench": 9, "testing": 9, "explore": 9,
     "__init__": 10,
 }  # fmt: skip
 #: Parts that must not import each other although their layers would allow it.

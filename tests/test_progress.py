@@ -68,3 +68,13 @@ def test_the_line_is_shown_every_interval_while_entered():
 def test_no_progress_when_stderr_is_not_a_terminal(capsys):
     assert main(["solve", str(FIVE_GOALS)]) == 0
     assert "strips: " not in capsys.readouterr().err
+
+
+def test_an_evaluator_prepared_per_problem_is_counted_too():
+    """relaxed-plan scores only once prepared for the problem (``for_problem``): the
+    counting wrapper prepares it and still counts (it used to hand the search the
+    unprepared evaluator, which refuses to score)."""
+    progress = Progress(io.StringIO())
+    planner = Planner.create({"evaluator": "relaxed-plan"})._replace(progress=progress)
+    result = planner.run(ROOT / "examples" / "robot-world" / "light.strips")
+    assert result.solved and progress.scored > 0

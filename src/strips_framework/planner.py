@@ -28,6 +28,7 @@ from strips_framework.user_files import is_dir, is_file
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
     from strips_framework.macrops.macrop import Library
+    from strips_framework.observer import SearchObserver
     from strips_framework.pddl import PddlTask
     from strips_framework.progress import Progress
     from strips_framework.result import Result
@@ -48,24 +49,30 @@ class Planner(Record):
     config: Config
     #: Counts the search's scores for a progress line (the CLI sets it on a terminal).
     progress: Progress | None
+    #: Watch the search (the explorer page, the VS Code search debugger's feed); none by
+    #: default, and then the search runs unwrapped (see :mod:`strips_framework.observer`).
+    observers: tuple[SearchObserver, ...]
 
-    __slots__ = ("registry", "config", "progress")
+    __slots__ = ("registry", "config", "progress", "observers")
 
     def __init__(
         self,
         registry: Registry,
         config: Config,
         progress: Progress | None = None,
+        observers: tuple[SearchObserver, ...] = (),
     ) -> None:
         self.registry = registry
         self.config = config
         self.progress = progress
+        self.observers = tuple(observers)
 
     @classmethod
     def create(
         cls,
         config: Config | Mapping[str, Any] | None = None,
         extra_plugins: Iterable[object] = (),
+        observers: Iterable[SearchObserver] = (),
     ) -> Planner:
         """A planner whose config is checked at once: every component the strategy uses is
         registered, its options valid and the chosen implementations fit together (each has
@@ -73,13 +80,15 @@ class Planner(Record):
 
         ``config`` is a :class:`Config`, or a mapping in the shape of the TOML file
         (``{"strategy": "astar", "heuristic": {"name": "lmcut"}}``); ``None`` takes the
-        defaults, the same as ``strips solve`` without ``--config``.
+        defaults, the same as ``strips solve`` without ``--config``. ``observers`` watch
+        every search (see :mod:`strips_framework.observer`; the explorer's
+        :class:`~strips_framework.explore.record.SearchRecord`).
         """
         if config is None:
             config = Config.default()
         elif not isinstance(config, Config):
             config = Config.from_dict(dict(config), "<api>")
-        return cls(Registry.from_plugins(extra_plugins), config).checked()
+        return cls(Registry.from_plugins(extra_plugins), config, observers=tuple(observers)).checked()
 
     def checked(self) -> Planner:
         """This planner, after building each component it uses, and every one the config
@@ -138,7 +147,7 @@ class Planner(Record):
         config = self.config.for_pddl(self.registry)
         if config is self.config:
             return self
-        return Planner(self.registry, config, self.progress).checked()
+        return Planner(self.registry, config, self.progress, self.observers).checked()
 
     def load(self, path: Path) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
@@ -234,15 +243,20 @@ class Planner(Record):
 
             use = self.config.section("macrops")
             relevance = MacroRelevance.of(relevance, library, use)
-        return strategy.search(
+        if self.progress is not None:
+            evaluator = self.progress.evaluator(evaluator)
+        for observer in self.observers:
+            evaluator = observer.evaluator(evaluator)
+        result = strategy.search(
             problem,
             build(self.registry, "prover"),
             build(self.registry, "difference"),
             relevance,
-            evaluator if self.progress is None else self.progress.evaluator(evaluator),
+            evaluator,
             self.config.limits,
             clock or Clock(self.config.limits.time),
         )
+        return self._finished(result)
 
     def solve_task(self, task: GroundTask, clock: Clock | None = None) -> Result:
         """Search ``task`` with the configured ground-task strategy and heuristic; the
@@ -258,7 +272,14 @@ class Planner(Record):
         estimator = heuristic.for_task(task)
         if self.progress is not None:
             estimator = self.progress.estimator(estimator)
-        return strategy.search_task(task, estimator, self.config.limits, clock)
+        for observer in self.observers:
+            estimator = observer.estimator(estimator, task)
+        return self._finished(strategy.search_task(task, estimator, self.config.limits, clock))
+
+    def _finished(self, result: Result) -> Result:
+        for observer in self.observers:
+            observer.finished(result)
+        return result
 
     def _require_world_model(self, problem: Path | str) -> None:
         if self.searches_ground_tasks:

@@ -104,5 +104,11 @@ class CountingEvaluator:
     def admissible(self) -> bool:
         return bool(getattr(self.inner, "admissible", False))
 
+    def for_problem(self, operators: Any, initial: Any) -> CountingEvaluator:
+        """The inner evaluator prepared for the problem when it needs it (``relaxed-plan``
+        scores nothing unprepared), still counted."""
+        prepare = getattr(self.inner, "for_problem", None)
+        return self if prepare is None else CountingEvaluator(prepare(operators, initial), self.progress)
+
     def evaluate(self, node: Any) -> float:
         return self.progress.note(self.inner.evaluate(node))

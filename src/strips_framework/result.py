@@ -113,3 +113,19 @@ class Result(Record):
     def limit(self) -> str | None:
         """The ``[limits]`` key that ended the run, if one did."""
         return limit_key(self.status)
+
+    def _repr_html_(self) -> str:
+        """The result in a notebook: status, plan and figures, and the tree, if any."""
+        from html import escape
+
+        rows = [("status", str(self.status)), ("plan cost", "-" if self.cost is None else str(self.cost)),
+                ("time", f"{self.seconds:.3f} s"),
+                *((name, str(value)) for name, value in self.statistics.as_dict().items())]
+        table = "".join(f"<tr><th style='text-align:left'>{escape(k)}</th><td>{escape(v)}</td></tr>"
+                        for k, v in rows)
+        steps = "".join(f"<li><code>{escape(step)}</code></li>" for step in self.plan or ())
+        plan = f"<ol>{steps}</ol>" if steps else "<p>no plan</p>"
+        tree = ""
+        if self.tree is not None:
+            tree = f"<details><summary>search tree</summary>{self.tree._repr_html_()}</details>"
+        return f"<div><table>{table}</table>{plan}{tree}</div>"

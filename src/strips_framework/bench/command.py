@@ -54,11 +54,14 @@ def report_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="strips bench report",
         description="Summary table per configuration, cactus and scatter plots (PNG, SVG), "
-        "and a Markdown report embedding them.",
+        "a Markdown report embedding them, and an HTML report (report.html: coverage and "
+        "score tables per domain, a sortable per-task table, scatter plots named on hover).",
     )
     parser.add_argument("results", type=Path, help="a results file written by 'strips bench'")
     parser.add_argument("-o", "--output", type=Path, help="folder (default: RESULTS-report/)")
     parser.add_argument("--pair", help="the scatter plot's two configurations: A,B (default: first two)")
+    parser.add_argument("--lab", action="store_true",
+                        help="also write the results as Downward Lab properties (FOLDER/properties)")
     return parser
 
 
@@ -172,7 +175,8 @@ def report(argv: list[str]) -> int:
     pair = [name.strip() for name in args.pair.split(",")] if args.pair else None
     if pair is not None and len(pair) != 2:
         raise ConfigError(f"--pair: expected two configuration names A,B, got {args.pair!r}")
-    print(write_report(rows, args.results, folder, pair))
-    print(f"\nwritten: {folder / 'report.md'}, summary.csv, cactus and scatter plots (PNG, SVG)",
-          file=sys.stderr)
+    print(write_report(rows, args.results, folder, pair, args.lab))
+    extra = ", properties" if args.lab else ""
+    print(f"\nwritten: {folder / 'report.html'}, report.md, summary.csv{extra}, cactus and "
+          "scatter plots (PNG, SVG)", file=sys.stderr)
     return 0

@@ -13,6 +13,7 @@ from __future__ import annotations
 import statistics
 from collections import defaultdict
 from collections.abc import Sequence
+from pathlib import PurePath
 from typing import Any
 
 from attrs import frozen
@@ -38,6 +39,9 @@ class Task:
     proving_seconds: float | None
     planner_seconds: float | None
     invalid: bool
+    #: The benchmark domain, as Downward Lab groups tasks: the problem's folder (else
+    #: its problem set).
+    domain: str = ""
 
 
 def _median(values: list[Any]) -> float | None:
@@ -64,6 +68,7 @@ def tasks(rows: Sequence[dict[str, Any]]) -> list[Task]:
             _median([run.get("proving_seconds") for run in runs]),
             _median([run.get("planner_seconds") for run in runs]),
             invalid,
+            PurePath(problem).parent.name or runs[0].get("problem_set") or "",
         ))
     return found
 

@@ -9,7 +9,7 @@ import sys
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from strips_framework import __version__
 from strips_framework.bench import command as bench_command
@@ -65,6 +65,12 @@ def _add_solve(commands: argparse._SubParsersAction) -> None:
     solve.add_argument("--plan-file", type=Path, help="also write the plan here, IPC style")
     solve.add_argument("--json", action="store_true", help="print the result as JSON")
     solve.add_argument("--tree", type=Path, help="write the search tree as Graphviz DOT")
+    solve.add_argument("--explore", type=Path, metavar="FILE.html",
+                       help="write the search as an interactive page (one self-contained "
+                       "HTML file: the tree, each node's goals, model, scores, difference)")
+    solve.add_argument("--search-debugger", metavar="PORT|URL",
+                       help="send the search live to the VS Code PDDL extension's search "
+                       "debugger listening on this port of 127.0.0.1 (or at this URL)")
     solve.add_argument("--macrops", type=Path, metavar="LIBRARY",
                        help="use the MACROPs of this library (see 'strips learn')")
 
@@ -198,9 +204,11 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     from strips_framework.cli.process_limits import enforced
 
     domain, problem = _domain_and_problem(args.files, "solve")
-    for path, what in ((args.plan_file, "the plan"), (args.tree, "the search tree")):
+    for path, what in ((args.plan_file, "the plan"), (args.tree, "the search tree"),
+                       (args.explore, "the explorer page")):
         if path is not None:
             check_writable(path, what)  # before the search, not after it
+    planner, watchers = _watched(planner, args)
     clock = Clock(planner.config.limits.time)
     result: Result | None = None
     progress: Progress | None = None
@@ -221,6 +229,11 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
         status = result.status
     if result is not None:
         _write_files(args, problem, result)
+        if args.explore is not None:
+            from strips_framework.explore.page import explorer_page
+
+            title = problem.stem if domain is None else f"{domain.parent.name}/{problem.stem}"
+            write_atomically(args.explore, explorer_page(watchers[0].document(title)))
     if args.json:
         chosen = planner.config
         config = {chosen.table_of(kind): chosen.choice(kind).name for kind in planner.kinds_used()}
@@ -236,13 +249,31 @@ def _solve(planner: Planner, args: argparse.Namespace) -> int:
     return exit_codes.for_status(status)
 
 
+def _watched(planner: Planner, args: argparse.Namespace) -> tuple[Planner, list[Any]]:
+    """The planner with the observers ``--explore`` and ``--search-debugger`` ask for
+    (the explorer's record first), and those observers."""
+    watchers: list[Any] = []
+    if args.explore is not None:
+        from strips_framework.explore.record import SearchRecord
+
+        watchers.append(SearchRecord())
+    if args.search_debugger is not None:
+        from strips_framework.explore.feed import DebuggerFeed
+
+        watchers.append(DebuggerFeed.connect(args.search_debugger))
+    if not watchers:
+        return planner, watchers
+    return planner._replace(observers=(*planner.observers, *watchers)), watchers
+
+
 def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> None:
     """The ``--tree`` and ``--plan-file`` outputs of a finished search."""
     if args.tree:
         if result.tree is None:
             warnings.warn(
                 f"--tree: the {result.statistics.family} search keeps no tree to draw "
-                f"(only the world-model strategies do); {args.tree} not written",
+                f"(only the world-model strategies do; --explore shows its states); "
+                f"{args.tree} not written",
                 stacklevel=1,
             )
         else:

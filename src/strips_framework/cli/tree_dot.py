@@ -1,11 +1,14 @@
 """The means-ends search tree as Graphviz DOT, in the spirit of the paper's Figure 1.
 
 Each node shows its number, its world model (as M0 plus the changes made so far) and its
-goal list; an edge into a node made by applying an operator is labelled with it and drawn
-bold; the solution path is drawn in red.
+goal list (long preconditions wrapped, never cut); an edge into a node made by applying
+an operator is labelled with it and drawn bold; the solution path is drawn in red. The
+explorer page (``--explore``) shows much more: this is the static picture.
 """
 
 from __future__ import annotations
+
+import textwrap
 
 from strips_framework.logic.formulas import formula_to_str
 from strips_framework.means_ends.node import Node
@@ -20,15 +23,17 @@ def _escape(text: str) -> str:
 
 
 def _goal_text(node: Node) -> str:
+    """The goal list, one goal a line; a long precondition wraps onto indented lines
+    (whole: a cut formula would hide the very literal a reader looks for)."""
     goals = []
     for goal in node.goals:
         text = "G0" if goal.operator is None else f"pre {goal.operator}"
         if goal.operator is not None:
-            formula = formula_to_str(goal.formula)
-            if len(formula) > _MAX_GOAL_TEXT:
-                formula = formula[: _MAX_GOAL_TEXT - 3] + "..."
-            text += f": {formula}"
-        goals.append(text)
+            pieces = textwrap.wrap(f"{text}: {formula_to_str(goal.formula)}", _MAX_GOAL_TEXT,
+                                   break_on_hyphens=False, subsequent_indent="    ")
+            goals.extend(pieces)
+        else:
+            goals.append(text)
     return "\\l".join(_escape(g) for g in goals) + "\\l"
 
 

@@ -11,6 +11,7 @@ from strips_framework.forward.result import ForwardStatistics
 from strips_framework.forward.space import StateSpace
 from strips_framework.grounding.task import GroundTask
 from strips_framework.limits import Clock, LimitReached, Limits
+from strips_framework.observer import watch_run
 from strips_framework.options import Configurable
 from strips_framework.result import Result, Status
 
@@ -31,6 +32,7 @@ class SearchRun:
         self.generated = 0
         self.reopened = 0
         self.dead_ends = 0
+        watch_run(estimator, self)  # an observer's estimator (--explore) sees the run
 
 
 class ForwardStrategy(Configurable):

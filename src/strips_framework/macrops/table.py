@@ -83,6 +83,12 @@ class TriangleTable:
         """n, the number of steps (rows 1 .. n+1, columns 0 .. n)."""
         return len(self.steps)
 
+    def _repr_svg_(self) -> str:
+        """The table's picture in a notebook (:func:`~strips_framework.macrops.render.svg_table`)."""
+        from strips_framework.macrops.render import svg_table
+
+        return svg_table(self)
+
     def kernel(self, i: int) -> tuple[Atom, ...]:
         """The marked clauses of kernel ``i`` (1 <= i <= n+1), without repetitions."""
         found = dict.fromkeys(

@@ -71,3 +71,9 @@ class Tree:
     def solution_path(self) -> list[Node]:
         """The nodes from the root to the goal node (empty when unsolved)."""
         return path_to(self.solution)
+
+    def _repr_html_(self) -> str:
+        """The tree in a notebook (see :mod:`strips_framework.means_ends.display`)."""
+        from strips_framework.means_ends.display import tree_html
+
+        return tree_html(self)

@@ -35,3 +35,8 @@ class GoalCount(Configurable):
 
     def evaluate(self, node: Node) -> float:
         return subgoals(node) + unproved_literals(node) + self.cost_weight * node.cost
+
+    def parts(self, node: Node) -> dict[str, float]:
+        """The terms of the score, by name (the explorer page shows them)."""
+        return {"goals": subgoals(node), "unproved literals": unproved_literals(node),
+                "cost": self.cost_weight * node.cost}

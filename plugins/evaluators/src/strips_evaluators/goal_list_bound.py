@@ -40,3 +40,8 @@ class GoalListBound(Configurable):
     def evaluate(self, node: Node) -> float:
         unproved = 1 if node.difference is not None else 0
         return float(node.cost + subgoals(node) + unproved)
+
+    def parts(self, node: Node) -> dict[str, float]:
+        """g and the two terms of h, by name (the explorer page shows them)."""
+        return {"cost": node.cost, "goals": subgoals(node),
+                "unproved": 1 if node.difference is not None else 0}

@@ -79,15 +79,19 @@ class PaperEvaluator(Configurable):
     pending_weight: float
 
     def evaluate(self, node: Node) -> float:
+        return sum(self.parts(node).values())
+
+    def parts(self, node: Node) -> dict[str, float]:
+        """The weighted terms of the score, by name (the explorer page shows them)."""
         pending = len(node.pending[0].resolvent.literals) if node.pending else 0
-        return (
-            self.goal_weight * subgoals(node)
-            + self._predicate_score(node)
-            + self.difference_weight * unproved_literals(node)
-            + self.cost_weight * node.cost
-            + self.successor_weight * node.successors_generated
-            + self.pending_weight * pending
-        )
+        return {
+            "goals": self.goal_weight * subgoals(node),
+            "predicates": self._predicate_score(node),
+            "difference": self.difference_weight * unproved_literals(node),
+            "cost": self.cost_weight * node.cost,
+            "successors": self.successor_weight * node.successors_generated,
+            "pending": self.pending_weight * pending,
+        }
 
     def _predicate_score(self, node: Node) -> float:
         table, default = self.predicate_weights, self.predicate_weight

@@ -120,12 +120,15 @@ class RelaxedPlanScorer:
         return False
 
     def evaluate(self, node: Node) -> float:
-        h = self.task.estimate(node, self.options.estimate == "ff")
-        return (
-            h
-            + self.options.cost_weight * node.cost
-            + self.options.successor_weight * node.successors_generated
-        )
+        return sum(self.parts(node).values())
+
+    def parts(self, node: Node) -> dict[str, float]:
+        """The terms of the score, by name (the explorer page shows them)."""
+        return {
+            "h": self.task.estimate(node, self.options.estimate == "ff"),
+            "cost": self.options.cost_weight * node.cost,
+            "successors": self.options.successor_weight * node.successors_generated,
+        }
 
 
 @define
