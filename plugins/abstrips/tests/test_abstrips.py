@@ -168,3 +168,29 @@ def test_a_plan_that_cannot_be_refined_sends_the_search_back_up(tmp_path):
 def test_a_bad_criticality_table_is_one_config_error():
     with pytest.raises(ConfigError, match="criticality"):
         Planner.create({"strategy": {"name": "abstrips", "criticality": {"OK": "high"}}})
+
+
+FREE_CHOICE = """\
+problem free-choice
+constants a b
+facts
+  TOOL(a), TOOL(b), HERE(b)
+operator use(t)
+  pre    TOOL(t) & HERE(t)
+  add    DONE
+goal DONE
+"""
+
+
+def test_bindings_the_abstract_proof_chose_are_the_refinements_to_remake(tmp_path):
+    # At the top level (TOOL only) the proof of use(t)'s precondition binds t to a, its
+    # first answer; HERE(a) never holds. The refinement is given use(t), not use(a), and
+    # its own proof finds b.
+    path = tmp_path / "free-choice.strips"
+    path.write_text(FREE_CHOICE)
+    planner = Planner.create({"strategy": {"name": "abstrips", "criticality": {"TOOL": 1}}})
+    result = planner.solve(planner.load(path))
+    assert result.status is Status.SOLVED
+    assert list(result.plan) == ["(use b)"]
+    top = [n for n in result.tree.nodes if n.level == 1 and n.applied is not None]
+    assert [str(n.applied) for n in top] == ["use(a)"]

@@ -3,8 +3,9 @@
 Sacerdoti's ABSTRIPS (1974) plans first in the most abstract space, where operators keep
 only their most critical precondition literals (see :mod:`strips_abstrips.hierarchy`),
 then refines the plan level by level: at each lower level, STRIPS starts from M0 with the
-goal list made of the abstract plan's steps, each step's precondition (at this level)
-followed by G0, so that its search only fills in what the abstract plan left out. The
+goal list made of the abstract plan's steps (bound as far as relevance chose them; the
+abstract proofs' other bindings are left to the refinement), each step's precondition
+(at this level) followed by G0, so that its search only fills in what the abstract plan left out. The
 refined plan goes to the next level down; the plan of the lowest level (the problem
 itself) is the answer.
 
@@ -166,15 +167,33 @@ class _Refiner:
             distinct_plans=index < len(self.levels) - 1,
         )
         tried: set[tuple[OperatorInstance, ...]] = set()
-        self.tree.level = self.levels[index]
+        level = self.tree.level = self.levels[index]
         for solution in run.solutions():
             if index == len(self.levels) - 1:
                 return solution
-            if solution.plan in tried:
+            steps = _as_chosen(solution, level)
+            if steps in tried:
                 continue
-            tried.add(solution.plan)
-            refined = self.refine(index + 1, solution.plan, solution)
+            tried.add(steps)
+            refined = self.refine(index + 1, steps, solution)
             if refined is not None:
                 return refined
             self.tree.level = self.levels[index]  # back at this level: its nodes again
         return None
+
+
+def _as_chosen(solution: Node, level: int) -> tuple[OperatorInstance, ...]:
+    """The plan of ``solution``'s level with each step bound as far as the search chose
+    it (by relevance, to achieve a goal), not as far as the abstract precondition's proof
+    bound it: parameters the abstract space left free (which hoist, which place, when
+    ``at`` is a detail) are the refinement's to choose, and binding them to the abstract
+    proof's first answer made abstract plans that no refinement could follow."""
+    from strips_framework.means_ends.node import path_to
+
+    return tuple(
+        node.parent.goals[0].operator
+        for node in path_to(solution)
+        if node.level == level and node.applied is not None
+        and node.parent is not None and node.parent.goals[0].operator is not None
+    )
+
