@@ -52,7 +52,8 @@ def load(name: str):
 
 def test_robot_world_criticalities_follow_the_documented_rule():
     problem = load("light.strips")
-    table = {(op, literal): value for op, literal, value in computed(problem).table(problem.operators)}
+    rows = computed(problem).table(problem.operators)
+    table = {(op, literal): value for op, literal, value in rows}
     assert table == ROBOT_TABLE
 
 

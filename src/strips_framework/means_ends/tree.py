@@ -49,7 +49,9 @@ class SearchTree:
         return node
 
     def result(self, status: Status, solution: Node | None) -> Result:
-        path = path_to(solution)
+        # A hierarchical search's path runs through every level; its figures count the
+        # solution's own level, whose applications are the plan.
+        path = [n for n in path_to(solution) if solution is None or n.level == solution.level]
         elapsed = self.clock.elapsed()
         statistics = WorldModelStatistics(
             nodes=len(self.nodes),

@@ -104,7 +104,9 @@ class Hierarchy:
         """The criticalities that occur, highest (most abstract) first."""
         return sorted(set(self.values.values()) or {DETAIL}, reverse=True)
 
-    def operators_at(self, operators: tuple[OperatorSchema, ...], level: int) -> tuple[OperatorSchema, ...]:
+    def operators_at(
+        self, operators: tuple[OperatorSchema, ...], level: int
+    ) -> tuple[OperatorSchema, ...]:
         """The operators of the abstraction space of ``level``."""
         return tuple(
             attrs.evolve(
@@ -233,7 +235,8 @@ class _Regression:
         """A fact of M0 matches ``atom`` and the operator's own parameters stay free."""
         if any(p.tag == 0 for p in _params(atom)):
             return False
-        return any(unify(atom, fact, {}) is not None for fact in self.facts.get((atom[0], len(atom) - 1), ()))
+        facts = self.facts.get((atom[0], len(atom) - 1), ())
+        return any(unify(atom, fact, {}) is not None for fact in facts)
 
 
 def _same_instance(atom: Atom, other: Atom) -> bool:

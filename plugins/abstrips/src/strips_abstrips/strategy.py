@@ -5,7 +5,8 @@ only their most critical precondition literals (see :mod:`strips_abstrips.hierar
 then refines the plan level by level: at each lower level, STRIPS starts from M0 with the
 goal list made of the abstract plan's steps (bound as far as relevance chose them; the
 abstract proofs' other bindings are left to the refinement), each step's precondition
-(at this level) followed by G0, so that its search only fills in what the abstract plan left out. The
+(at this level) followed by G0, so that its search only fills in what the abstract plan
+left out. The
 refined plan goes to the next level down; the plan of the lowest level (the problem
 itself) is the answer.
 
@@ -84,7 +85,8 @@ class AbstripsSearch(Configurable):
                 from strips_framework.options import OptionError
 
                 raise OptionError(
-                    "criticality", f"expected predicate names mapped to integers, got {key!r} = {value!r}"
+                    "criticality",
+                    f"expected predicate names mapped to integers, got {key!r} = {value!r}",
                 )
 
     def hierarchy(self, problem: Problem) -> Hierarchy:

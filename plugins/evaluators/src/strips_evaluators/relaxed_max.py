@@ -95,7 +95,9 @@ class _Layers:
         self.exact = all(_is_horn_rule(c) for c in rules)
         self.rules = [(_head(c), [a for positive, a in c.literals if not positive]) for c in rules]
         self.operators = [(s, _Query.of(s.precondition), s.add_list) for s in operators]
-        constants = {t for c in initial.clauses for _, a in c.literals for t in a[1:] if type(t) is str}
+        constants = {
+            t for c in initial.clauses for _, a in c.literals for t in a[1:] if type(t) is str
+        }
         constants.update(t for s in operators for a in s.add_list for t in a[1:] if type(t) is str)
         self.constants = sorted(constants)
         self._known: OrderedDict[tuple[WorldModel, Formula], float] = OrderedDict()
@@ -186,12 +188,9 @@ class _Query:
         """Bindings of the atoms' open terms to facts, then of the open terms of
         ``needed`` and the (in)equalities that are still unbound, over the constants."""
         for binding in _join(self.atoms, facts, {}):
-            rest = {
-                t
-                for atom in needed
-                for t in atom[1:]
-                if _open(t) and t not in binding
-            } | {t for pair in (*self.equal, *self.unequal) for t in pair if _open(t) and t not in binding}
+            terms = [t for atom in needed for t in atom[1:]]
+            terms += [t for pair in (*self.equal, *self.unequal) for t in pair]
+            rest = {t for t in terms if _open(t) and t not in binding}
             free = sorted(rest, key=repr)
             for values in itertools.product(constants, repeat=len(free)):
                 full = {**binding, **dict(zip(free, values))}
@@ -210,7 +209,11 @@ def _parts(formula: Formula) -> Iterator[Atomic | Not]:
         yield from _parts(formula.body)
     elif isinstance(formula, Atomic):
         yield formula
-    elif isinstance(formula, Not) and isinstance(formula.body, Atomic) and formula.body.atom[0] == EQUALITY:
+    elif (
+        isinstance(formula, Not)
+        and isinstance(formula.body, Atomic)
+        and formula.body.atom[0] == EQUALITY
+    ):
         yield formula
 
 

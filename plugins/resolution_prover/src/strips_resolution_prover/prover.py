@@ -835,7 +835,8 @@ class _Saturation:
         signature = (simplified.literals, simplified.bindings)
         if signature in self.seen or self._subsumed_by_unit(simplified):
             return None
-        if self.sld and self._rests_on_false_rigid_atom(simplified):
+        selecting_goals = self.sld and self.options.goal_selection != "every"
+        if selecting_goals and self._rests_on_false_rigid_atom(simplified):
             return None
         self.seen.add(signature)
         self.own.register(simplified)
