@@ -195,3 +195,20 @@ def test_bindings_the_abstract_proof_chose_are_the_refinements_to_remake(tmp_pat
     assert list(result.plan) == ["(use b)"]
     top = [n for n in result.tree.nodes if n.level == 1 and n.applied is not None]
     assert [str(n.applied) for n in top] == ["use(a)"]
+
+
+def test_an_achiever_whose_static_literal_no_fact_matches_is_no_short_plan(tmp_path):
+    # get(x) would achieve HAVE(x) in one step, but it needs SHOP(x), static and never a
+    # fact: HAVE(x) is critical for use(x). With a shop, it is a detail.
+    text = (
+        "problem shops\nconstants a\nfacts\n  ITEM(a)\n{shop}"
+        "operator use(x)\n  pre    ITEM(x) & HAVE(x)\n  add    DONE\n"
+        "operator get(x)\n  pre    SHOP(x)\n  add    HAVE(x)\ngoal DONE\n"
+    )
+    values = {}
+    for shop in ("", "  SHOP(a)\n"):
+        path = tmp_path / "shops.strips"
+        path.write_text(text.format(shop=shop))
+        problem = Planner.create().load(path)
+        values[bool(shop)] = computed(problem).values[("use", 1)]
+    assert values == {False: CRITICAL, True: DETAIL}
