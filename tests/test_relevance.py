@@ -91,3 +91,19 @@ def test_a_rigid_fact_inside_a_nested_conjunction_counts_too():
     ])
     found = _relevant(difference, [pushto], model)
     assert [str(r.operator) for r in found] == ["pushto(BOX1, a)"]
+
+
+def test_rank_cost_puts_the_instance_whose_precondition_holds_first():
+    # Two instances leave empty resolvents (a tie by resolvent size); make(b)'s
+    # precondition READY(b) is a fact of the model, make(a)'s READY(a) is not. The
+    # default ranking keeps the clauses' order; rank = "cost" puts make(b) first.
+    x = Param("x")
+    make = OperatorSchema("make", [x], Atomic(("READY", x)), [("G", x)], [])
+    model = WorldModel(InitialModel([Clause([(True, ("READY", "b"))])]))
+    difference = Difference([Clause([(False, ("G", "a"))]), Clause([(False, ("G", "b"))])])
+    by_resolvent = _relevant(difference, [make], model)
+    by_cost = AddListRelevance(rank="cost").for_problem([make], model.initial).relevant(
+        difference, model
+    )
+    assert [str(r.operator) for r in by_resolvent] == ["make(a)", "make(b)"]
+    assert [str(r.operator) for r in by_cost] == ["make(b)", "make(a)"]

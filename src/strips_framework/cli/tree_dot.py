@@ -3,7 +3,9 @@
 Each node shows its number, its world model (as M0 plus the changes made so far) and its
 goal list (long preconditions wrapped, never cut); an edge into a node made by applying
 an operator is labelled with it and drawn bold; the solution path is drawn in red. The
-explorer page (``--explore``) shows much more: this is the static picture.
+explorer page (``--explore``) shows much more: this is the static picture. A hierarchical
+search (ABSTRIPS) draws the nodes of each abstraction level in a box of their own,
+labelled with the level.
 """
 
 from __future__ import annotations
@@ -46,6 +48,7 @@ def search_tree_to_dot(tree: Tree, title: str = "STRIPS search tree") -> str:
         '  edge [fontname="Helvetica", fontsize=9];',
     ]
     model_names: dict[WorldModel, str] = {}
+    by_level: dict[int | None, list[str]] = {}
     for node in tree.nodes:
         # Models are numbered in order of appearance, as M0, M1, ... in the paper's figure.
         model = model_names.setdefault(node.model, f"M{len(model_names)}")
@@ -53,7 +56,14 @@ def search_tree_to_dot(tree: Tree, title: str = "STRIPS search tree") -> str:
         style = ', color=red, penwidth=2' if id(node) in on_path else ""
         if node is tree.solution:
             style += ", peripheries=2"
-        lines.append(f'  n{node.id} [label="{label}"{style}];')
+        by_level.setdefault(node.level, []).append(f'n{node.id} [label="{label}"{style}];')
+    for level, nodes in by_level.items():
+        if level is None:
+            lines += [f"  {line}" for line in nodes]
+            continue
+        lines.append(f'  subgraph cluster_level_{level} {{ label="level {level}"; style=dashed;')
+        lines += [f"    {line}" for line in nodes]
+        lines.append("  }")
     for node in tree.nodes:
         if node.parent is None:
             continue

@@ -91,7 +91,9 @@ class ModelAStarSearch(Configurable):
                 node.difference = differences.extract(result, goal_prover.negated(problem.goal))
             return node
 
-        queue: list[tuple[float, int, Node]] = []
+        # Ties on the score go to the node with more operators applied (the lower
+        # estimate, nearer a goal), then first in, as in Fast Downward's A*.
+        queue: list[tuple[float, int, int, Node]] = []
         counter = itertools.count()
         # The cheapest known cost of reaching each model; a node reaching it at no lower
         # cost is a duplicate and is never made (or, if superseded later, never expanded).
@@ -99,10 +101,10 @@ class ModelAStarSearch(Configurable):
         try:
             root = make(goal_prover.root_model(), None, ())
             best_cost[root.model] = 0
-            heapq.heappush(queue, (evaluator.evaluate(root), next(counter), root))
+            heapq.heappush(queue, (evaluator.evaluate(root), 0, next(counter), root))
             while queue:
                 tree.check_time()
-                _, _, node = heapq.heappop(queue)
+                _, _, _, node = heapq.heappop(queue)
                 if node.difference is None:
                     return tree.result(Status.SOLVED, node)
                 if node.cost > best_cost[node.model]:
@@ -113,7 +115,8 @@ class ModelAStarSearch(Configurable):
                         continue
                     best_cost[model] = node.cost + 1
                     child = make(model, node, (*node.plan, *instance.steps()), instance)
-                    heapq.heappush(queue, (evaluator.evaluate(child), next(counter), child))
+                    score = evaluator.evaluate(child)
+                    heapq.heappush(queue, (score, -child.cost, next(counter), child))
         except LimitReached as limit:
             return tree.result(limit.status, None)
         except KeyboardInterrupt:  # Ctrl-C: report what the search did so far

@@ -53,7 +53,9 @@ class Node:
 
     ``plan`` holds the operators applied from the root to this node (its cost so far);
     ``difference`` is set when the first goal could not be proved; ``pending`` holds the
-    relevant instances whose successors have not been generated yet.
+    relevant instances whose successors have not been generated yet. ``level`` is the
+    abstraction level the node was made at by a hierarchical strategy (ABSTRIPS: the
+    criticality its operators' preconditions are cut at), ``None`` in a one-level search.
     """
 
     id: int
@@ -65,6 +67,7 @@ class Node:
     difference: Difference | None = None
     pending: list[RelevantInstance] = field(factory=list)
     successors_generated: int = 0
+    level: int | None = None
 
     @property
     def depth(self) -> int:

@@ -17,14 +17,23 @@ which would delete ``NEXTTO(BOX1, BOX2)``).
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Sequence
+from functools import cache
+from collections.abc import Iterator, Sequence
 from typing import ClassVar
 
-from attrs import frozen
+from attrs import field, frozen, validators
 
 from strips_framework.logic.clauses import Clause
-from strips_framework.logic.formulas import Atomic, conjuncts
-from strips_framework.logic.terms import Atom, Param, Term, is_ground, params_of, variables_of
+from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Var, conjuncts
+from strips_framework.logic.terms import (
+    EQUALITY,
+    Atom,
+    Param,
+    Term,
+    is_ground,
+    params_of,
+    variables_of,
+)
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
 from strips_framework.options import Configurable
@@ -48,16 +57,36 @@ class AddListRelevance(Configurable):
     of a *rigid* predicate (one no operator adds and no rule of the model concludes) that
     is not a fact of the model. Facts of rigid predicates can only be deleted, so such an
     atom never becomes true (``pushto(ROBOT, BOX2)`` needs ``PUSHABLE(ROBOT)``).
+
+    ``rank = "cost"`` ranks instances by what choosing them will cost to achieve: the
+    resolvent's literals (what is left of the difference) plus the atoms of the
+    instance's precondition that no fact of the model matches (what its subgoal must
+    achieve; atoms of predicates an axiom concludes are not counted, a fact index cannot
+    tell whether they hold). ``"resolvent"`` (the default, which gives the paper's node
+    counts) ranks by the resolvent alone. With the relaxed-plan evaluator on depot 03,
+    "cost" takes 1,146 nodes where "resolvent" stops at the 10,000-node limit.
     """
 
     name: ClassVar[str] = "add-list"
     capabilities: ClassVar[frozenset[str]] = frozenset()
 
+    rank: str = field(default="resolvent", validator=validators.in_(("resolvent", "cost")))
+
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel
     ) -> AddListIndex:
-        """The add-list index of one problem, built once, and M0's rigid predicates."""
-        return AddListIndex(_add_atoms_by_predicate(operators), initial.rigid)
+        """The add-list index of one problem, built once, M0's rigid predicates and
+        those its rules conclude."""
+        concluded = frozenset(
+            (atom[0], len(atom) - 1)
+            for clause in initial.clauses
+            if not clause.is_unit
+            for positive, atom in clause.literals
+            if positive
+        )
+        return AddListIndex(
+            _add_atoms_by_predicate(operators), initial.rigid, concluded, self.rank == "cost"
+        )
 
 
 @frozen
@@ -68,10 +97,12 @@ class AddListIndex:
 
     by_predicate: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]
     rigid: frozenset[tuple[str, int]]
+    concluded: frozenset[tuple[str, int]] = frozenset()
+    by_cost: bool = False
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         protected = _protected_facts(difference, model)
-        ranked: dict[OperatorInstance, tuple[tuple[int, int, int], RelevantInstance]] = {}
+        ranked: dict[OperatorInstance, tuple[tuple[int, ...], RelevantInstance]] = {}
         order = 0
         for clause in difference.clauses:
             for position, (positive, atom) in enumerate(clause.literals):
@@ -82,7 +113,10 @@ class AddListIndex:
                     if found is None or _never_applicable(found.operator, self.rigid, model):
                         continue
                     harm = _deleted_count(found.operator, protected)
-                    key = (len(found.resolvent.literals), harm, order)
+                    size = len(found.resolvent.literals)
+                    if self.by_cost:
+                        size += _missing_preconditions(found.operator, model, self.concluded)
+                    key = (size, harm, order)
                     order += 1
                     known = ranked.get(found.operator)
                     if known is None or key < known[0]:
@@ -146,6 +180,54 @@ def _never_applicable(
             if is_ground(atom) and not model.holds(atom):
                 return True
     return False
+
+
+def _missing_preconditions(
+    instance: OperatorInstance, model: WorldModel, concluded: frozenset[tuple[str, int]]
+) -> int:
+    """The atoms of the instance's precondition (its conjuncts, nested conjunctions and
+    existentials flattened) that no fact of ``model`` matches: a count of what its subgoal
+    still has to achieve."""
+    binding = instance.binding_map()
+    missing = 0
+    for part in _conjunct_atoms(instance.schema.precondition):
+        if (part[0], len(part) - 1) in concluded:
+            continue  # an axiom may conclude it: no fact to look for
+        atom = substitute(part, binding)
+        if is_ground(atom):
+            missing += not model.holds(atom)
+        elif not any(unify(atom, fact, {}) is not None for fact in model.facts_matching(atom)):
+            missing += 1
+    return missing
+
+
+@cache
+def _conjunct_atoms(formula: Formula) -> tuple[Atom, ...]:
+    """The positive atoms but equalities among the conjuncts of ``formula``, inside
+    existentials too, their quantified variables as clause variables (so a fact can bind
+    them). Cached: it is asked for each candidate instance of a schema."""
+    return tuple(a for a in _positive_conjuncts(formula) if a[0] != EQUALITY)
+
+
+def _positive_conjuncts(formula: Formula) -> Iterator[Atom]:
+    names: dict[Var, int] = {}
+
+    def term(t: object) -> object:
+        if isinstance(t, Var):
+            return names.setdefault(t, len(names))
+        if type(t) is tuple:
+            return (t[0], *map(term, t[1:]))
+        return t
+
+    stack = [formula]
+    while stack:
+        part = stack.pop()
+        if isinstance(part, Exists):
+            stack.append(part.body)
+        elif isinstance(part, And):
+            stack.extend(reversed(part.parts))
+        elif isinstance(part, Atomic):
+            yield (part.atom[0], *map(term, part.atom[1:]))
 
 
 def _protected_facts(

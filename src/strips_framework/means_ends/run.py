@@ -5,6 +5,7 @@ apart from the strategy class so that registering the strategy imports none of t
 from __future__ import annotations
 
 import heapq
+from collections.abc import Iterator
 
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.logic.formulas import Formula
@@ -37,28 +38,54 @@ class MeansEndsRun:
         evaluator: NodeEvaluator,
         limits: Limits,
         clock: Clock,
+        tree: SearchTree | None = None,
+        planned: tuple[Goal, ...] = (),
+        parent: Node | None = None,
+        max_nodes: int | None = None,
+        distinct_plans: bool = False,
     ) -> None:
         self.max_goals = max_goals
         self.goal_prover = goal_prover
         self.differences = differences
         self.relevance = relevance.for_problem(problem.operators, goal_prover.initial)
         self.evaluator = evaluator_for_problem(evaluator, problem.operators, goal_prover.initial)
-        self.tree = SearchTree(limits, goal_prover, clock)
+        self.tree = tree or SearchTree(limits, goal_prover, clock)
         self.queue: list[tuple[float, int, Node]] = []
         self.pushes = 0
-        self.seen: set[tuple[WorldModel, tuple[Goal, ...]]] = set()
+        self.seen: set[tuple[object, ...]] = set()
         self.analysed: dict[
             tuple[WorldModel, Formula], tuple[Difference, list[RelevantInstance] | None]
         ] = {}
         self.top_goal = Goal(problem.goal)
+        # The root's goal list: the goals of a plan made at a more abstract level, if
+        # any, then G0. Subgoaling depth (``max_goals``) and the dropping of goals a deeper
+        # one makes unnecessary count only the goals pushed above them.
+        self.start = (*planned, self.top_goal)
+        self.planned = frozenset(self.start)
+        self.parent = parent
+        self.max_nodes = max_nodes
+        self.distinct_plans = distinct_plans
+
+    def solutions(self) -> Iterator[Node]:
+        """The goal nodes of the search, in the order found: asked for another, the
+        search goes on from where it stopped (ABSTRIPS asks again when a plan cannot be
+        refined). Stops when the queue is empty or ``max_nodes`` nodes were made."""
+        first = len(self.tree.nodes)
+        solution = self._make(self.goal_prover.root_model(), self.start, self.parent, ())
+        if solution is not None:
+            yield solution
+        while self.queue:
+            if self.max_nodes is not None and len(self.tree.nodes) - first >= self.max_nodes:
+                return
+            self.tree.check_time()
+            _, _, node = heapq.heappop(self.queue)
+            solution = self._expand(node)
+            if solution is not None:
+                yield solution
 
     def search(self) -> Result:
         try:
-            solution = self._make(self.goal_prover.root_model(), (self.top_goal,), None, ())
-            while solution is None and self.queue:
-                self.tree.check_time()
-                _, _, node = heapq.heappop(self.queue)
-                solution = self._expand(node)
+            solution = next(self.solutions(), None)
         except LimitReached as limit:
             return self.tree.result(limit.status, None)
         except KeyboardInterrupt:  # Ctrl-C: report what the search did so far
@@ -97,9 +124,10 @@ class MeansEndsRun:
         while True:
             if applied is not None:
                 goals = self._skip_achieved(model, goals)
-            if (model, goals) in self.seen:
+            key = self._key(model, goals, plan)
+            if key in self.seen:
                 return None  # the same problem is already being worked on elsewhere
-            self.seen.add((model, goals))
+            self.seen.add(key)
             node = self.tree.new_node(model, goals, parent, plan, applied)
             first = goals[0]
             result = self.goal_prover.prove(model, first.formula)
@@ -114,15 +142,28 @@ class MeansEndsRun:
             model, goals, parent = operator.apply(model), goals[1:], node
             plan, applied = (*plan, *operator.steps()), operator
 
+    def _key(
+        self, model: WorldModel, goals: tuple[Goal, ...], plan: tuple[OperatorInstance, ...]
+    ) -> tuple[object, ...]:
+        """What makes a node a repeat: its model and goal list. With ``distinct_plans``
+        (a search whose plans are refined further, where two plans to one model may
+        refine differently) a node back at the root's goal list also keeps its plan."""
+        if self.distinct_plans and goals == self.start:
+            return (model, goals, plan)
+        return (model, goals)
+
     def _skip_achieved(self, model: WorldModel, goals: tuple[Goal, ...]) -> tuple[Goal, ...]:
         """The goal list from its deepest goal that ``model`` already satisfies (``goals``
         when none below the first does). A goal-list operator is there to help achieve the
         goal below it, so once an application makes a deeper goal true the operators
         above it are not needed: STRIPS applies that goal's operator (or, at G0, is done)
-        instead of working through them. Only a changed model can make a deeper goal true
+        instead of working through them. Goals below the first planned one (a refined
+        plan's steps, or G0) are not looked at: a planned step is there for what comes
+        after it, not for the goal above it. Only a changed model can make a deeper goal true
         (each was unproved when it was pushed down), so only nodes made by an application
         are checked; the proofs are cached per (model, goal)."""
-        for depth in range(len(goals) - 1, 0, -1):
+        deepest = next(i for i, goal in enumerate(goals) if goal in self.planned)
+        for depth in range(deepest, 0, -1):
             if self.goal_prover.prove(model, goals[depth].formula).proved:
                 return goals[depth:]
         return goals
@@ -138,7 +179,8 @@ class MeansEndsRun:
             known = (self.differences.extract(result, negated), None)
             self.analysed[key] = known
         node.difference, relevant = known
-        if len(node.goals) >= self.max_goals:
+        pushed = sum(1 for goal in node.goals if goal not in self.planned)
+        if pushed + 1 >= self.max_goals:
             return
         if relevant is None:
             relevant = self.relevance.relevant(node.difference, node.model)

@@ -16,12 +16,15 @@ from strips_framework.worldmodel.world import WorldModel
 @define
 class SearchTree:
     """``clock`` is the run's (see :class:`~strips_framework.limits.Clock`);
-    ``searching_since`` when this search began, for its own time in the statistics."""
+    ``searching_since`` when this search began, for its own time in the statistics.
+    ``level`` is stamped on each new node: a hierarchical strategy sets it before it
+    searches each abstraction level (see :attr:`Node.level`)."""
 
     limits: Limits
     prover: GoalProver
     clock: Clock
     nodes: list[Node] = field(factory=list)
+    level: int | None = None
     searching_since: float = field(init=False)
 
     def __attrs_post_init__(self) -> None:
@@ -41,12 +44,14 @@ class SearchTree:
         if len(self.nodes) >= self.limits.nodes:
             raise LimitReached(Status.NODE_LIMIT)
         self.check_time()
-        node = Node(len(self.nodes), model, goals, parent, plan, applied)
+        node = Node(len(self.nodes), model, goals, parent, plan, applied, level=self.level)
         self.nodes.append(node)
         return node
 
     def result(self, status: Status, solution: Node | None) -> Result:
-        path = path_to(solution)
+        # A hierarchical search's path runs through every level; its figures count the
+        # solution's own level, whose applications are the plan.
+        path = [n for n in path_to(solution) if solution is None or n.level == solution.level]
         elapsed = self.clock.elapsed()
         statistics = WorldModelStatistics(
             nodes=len(self.nodes),

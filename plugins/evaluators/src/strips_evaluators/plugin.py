@@ -23,9 +23,13 @@ def strips_register_evaluators() -> list[type[NodeEvaluator]]:
     from strips_evaluators.goal_count import GoalCount
     from strips_evaluators.goal_list_bound import GoalListBound
     from strips_evaluators.paper import PaperEvaluator
+    from strips_evaluators.relaxed_max import RelaxedMaxEvaluator
     from strips_evaluators.relaxed_plan import RelaxedPlanEvaluator
 
-    return [PaperEvaluator, BreadthFirst, GoalCount, GoalListBound, RelaxedPlanEvaluator]
+    return [
+        PaperEvaluator, BreadthFirst, GoalCount, GoalListBound, RelaxedPlanEvaluator,
+        RelaxedMaxEvaluator,
+    ]
 
 
 @hookimpl
