@@ -21,6 +21,7 @@ from pathlib import Path
 
 from attrs import frozen
 
+from strips_framework.capabilities import ANSWER_LITERALS, declared
 from strips_framework.errors import InputError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
@@ -38,7 +39,7 @@ from strips_framework.logic.formulas import (
     Var,
     substitute_free,
 )
-from strips_framework.logic.terms import EQUALITY, Param, Term
+from strips_framework.logic.terms import ANSWER, EQUALITY, SKOLEM_PREFIX, Param, Term
 from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
@@ -69,6 +70,11 @@ _TOKEN = re.compile(
 )
 
 _BINARY = {"=>", "<=", "<=>", "<~>", "~|", "~&"}
+
+
+class Inappropriate(InputError):
+    """Input in a language the provers do not handle (SZS status ``Inappropriate``), as
+    opposed to a syntax error: a defined symbol such as ``$sum``."""
 
 
 @frozen
@@ -119,6 +125,8 @@ class _Parser:
         self.tokens = _tokenize(text, path)
         self.pos = 0
         self.depth = 0  # parenthesized formulas, negations, quantifiers and terms being read
+        #: Distinct objects (``"abc"``) and numbers met, in order: pairwise distinct.
+        self.distinct: dict[str, None] = {}
 
     # -- token helpers --------------------------------------------------------------------
 
@@ -135,6 +143,19 @@ class _Parser:
         found = repr(token.text) if token.kind != "end" else "end of file"
         return InputError(
             self.path, token.line, token.column, f"expected {expected}, found {found}"
+        )
+
+    def uninterpreted(self, token: _Token) -> Inappropriate:
+        """A defined (``$sum``, ``$less``, ``$int``) or system (``$$...``) symbol: it has
+        a meaning (arithmetic, types) that the provers do not interpret, and reading it as
+        an uninterpreted symbol would make saturation claim Satisfiable of a problem
+        whose arithmetic it ignored."""
+        return Inappropriate(
+            self.path,
+            token.line,
+            token.column,
+            f"the defined symbol {token.text} is not supported (only $true and $false are "
+            "interpreted; arithmetic and types are not)",
         )
 
     def expect(self, text: str) -> _Token:
@@ -280,6 +301,8 @@ class _Parser:
         if token.kind == "dollar" and token.text in ("$true", "$false"):
             self.next()
             return Truth(token.text == "$true")
+        if token.kind == "dollar":
+            raise self.uninterpreted(token)
         if token.kind not in ("word", "quoted", "var", "distinct", "number", "dollar"):
             raise self.error("a formula")
         left = self.term()
@@ -296,11 +319,14 @@ class _Parser:
         if token.kind == "var":
             return Var(token.text)
         if token.kind in ("distinct", "number"):
+            self.distinct[token.text] = None
             return token.text
         if token.kind == "quoted":
             symbol = _unquote(token.text)
-        elif token.kind in ("word", "dollar"):
+        elif token.kind == "word":
             symbol = token.text
+        elif token.kind == "dollar":
+            raise self.uninterpreted(token)
         else:
             raise self.error("a term", token)
         if not self.at("("):
@@ -379,6 +405,11 @@ class TptpProblem:
 
     path: str
     formulas: tuple[TptpFormula, ...]
+    #: The distinct objects (``"abc"``) and numbers the formulas name. TPTP interprets
+    #: them as themselves, so two different ones are unequal: :meth:`task` adds that as
+    #: axioms, since without them saturation could claim Satisfiable of ``"a" = "b"``.
+    #: (Arithmetic on numbers, ``$sum`` and the like, is refused when read.)
+    distinct_objects: tuple[str, ...] = ()
 
     @property
     def name(self) -> str:
@@ -405,12 +436,16 @@ class TptpProblem:
         max_answers: int = 1,
         unique_names: bool = False,
         answers: bool = True,
+        answer_literals: bool = False,
     ) -> ProofTask:
         """The proof task: negated goals are the set of support, the rest are axioms.
 
         Several conjectures are proved together (TPTP: their conjunction is the goal), so
         their conjunction is negated as one formula. ``answers`` false keeps a question's
         variables existential: the conjecture alone, without parameters to bind.
+        ``answer_literals`` keeps them variables and records them in an answer literal
+        instead (``? [X] : F(X)`` is negated as ``! [X] : (~F(X) | $answer(X))``, E's
+        way), for a prover that declares ``answer-literals``.
         """
         skolem = SkolemNames()
         axioms: list[Clause] = []
@@ -424,9 +459,17 @@ class TptpProblem:
                 (axioms if goals else support).extend(clauses)
         conjectures = [f for f in goals if f.role != "negated_conjecture"]
         if conjectures:
-            goal = And(_goal_body(f) if answers else _close(f.formula) for f in conjectures)
+            goal = And(
+                _answer_goal(f) if answer_literals else _goal_body(f) if answers else _close(f.formula)
+                for f in conjectures
+            )
             label = ",".join(f.name for f in conjectures)
             support.extend(clausify(Not(goal), label=label, skolem=skolem))
+        objects = self.distinct_objects
+        for i, first in enumerate(objects):
+            for second in objects[i + 1 :]:
+                unequal = Not(Atomic((EQUALITY, first, second)))
+                (axioms if goals else support).extend(clausify(unequal, label="$distinct", skolem=skolem))
         return ProofTask(
             axioms, support, effort=effort, max_answers=max_answers, unique_names=unique_names
         )
@@ -440,9 +483,21 @@ def _goal_body(f: TptpFormula) -> Formula:
     return _close(substitute_free(f.formula.body, params))
 
 
+def _answer_goal(f: TptpFormula) -> Formula:
+    """A question ``? [X] : F(X)`` as ``? [X] : (F(X) & ~$answer(X))``, whose negation
+    puts ``$answer(X)`` into every clause of the negated question; other goals as is."""
+    if f.role != "question" or not isinstance(f.formula, Exists):
+        return _close(f.formula)
+    variables = tuple(f.formula.variables)
+    answer = Not(Atomic((ANSWER, *variables)))
+    return _close(Exists(variables, And((f.formula.body, answer))))
+
+
 def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:
     """Parse TPTP text; raise :class:`InputError` at the first token that does not fit."""
-    return TptpProblem(path, tuple(_Parser(text, path).file()))
+    parser = _Parser(text, path)
+    formulas = tuple(parser.file())
+    return TptpProblem(path, formulas, tuple(parser.distinct))
 
 
 def load_tptp(path: str | Path) -> TptpProblem:
@@ -466,44 +521,99 @@ def szs_status(problem: TptpProblem, result: ProofResult) -> str:
 
 
 #: How many times the given clauses of the conjecture's proof the search for a definite
-#: answer gets (see :func:`prove_tptp`). The answered questions of the TPTP dev set need
-#: up to 5 times (SYN031-1.q: 12 for the proof, 58 for the answer); 8 leaves room.
+#: answer gets, for a prover without answer literals (see :func:`prove_tptp`). The
+#: answered questions of the TPTP dev set need up to 5 times (SYN031-1.q: 12 for the
+#: proof, 58 for the answer); 8 leaves room.
 ANSWER_SEARCH_FACTOR = 8
 
 
-def prove_tptp(prover: TheoremProver, problem: TptpProblem, effort: int) -> tuple[str, str | None]:
-    """``problem`` posed to ``prover``: its SZS status and answer tuples (or ``None``).
+@frozen
+class TptpOutcome:
+    """What :func:`prove_tptp` found: the SZS status, the answer tuples (``None`` when
+    there are none) and each proof attempt made, named (``problem``, ``question`` with
+    answer literals, or ``conjecture`` then ``answer search`` with parameters)."""
+
+    status: str
+    answers: str | None = None
+    attempts: tuple[tuple[str, ProofResult], ...] = ()
+
+    @property
+    def effort_used(self) -> int:
+        return sum(result.effort_used for _, result in self.attempts)
+
+
+def prove_tptp(prover: TheoremProver, problem: TptpProblem, effort: int) -> TptpOutcome:
+    """``problem`` posed to ``prover``: its SZS status and answer tuples.
 
     A TPTP user asks whether the conjecture is a theorem, and for a question which
-    instance: E answers ``Theorem`` with a definite tuple, a Skolem term or a disjunction
-    of tuples (``[([a]|[b])|_]``). Ours reports definite answers only, the ones a STRIPS
-    planner may bind (paper, III.A), found by asking with the variables as parameters.
-    That search is a restriction of the conjecture's (a parameter takes one ground,
-    Skolem-free value per derivation), so it needs more given clauses, never fewer, and
-    where no definite answer exists it runs until its effort is spent. Hence the
-    conjecture goes first, its variables existential, on the whole ``effort``: it
-    settles the status (``CounterSatisfiable`` or ``GaveUp`` also mean no answer will be
-    found). After a proof in ``u`` given clauses the answer search gets
-    :data:`ANSWER_SEARCH_FACTOR` times ``u`` (at most ``effort``): the cost of a theorem
-    without a definite answer stays a multiple of its proof's, not the whole effort
-    again. The planner never runs the conjecture attempt and never binds a parameter
-    from it.
+    instance. A prover that declares ``answer-literals`` (:data:`ANSWER_LITERALS`) gets
+    the question as E does: its variables stay variables, recorded in an answer literal,
+    so one run settles the status and finds the answer, be it definite (``[[a]|_]``), a
+    term with variables, a Skolem term (``[[esk1_0]|_]``) or a disjunction
+    (``[([a]|[b])|_]``); saturation without an answer clause is ``CounterSatisfiable``.
+
+    Any other prover is asked with the variables as parameters, which binds definite
+    answers only (paper, III.A: the planner's way). That search is a restriction of the
+    conjecture's, so the conjecture goes first, its variables existential, on the whole
+    ``effort``, and settles the status; after a proof in ``u`` given clauses the answer
+    search gets :data:`ANSWER_SEARCH_FACTOR` times ``u`` (at most ``effort``). The
+    planner binds parameters from definite answers only, never from answer literals.
     """
     if not problem.question_variables:
         result = prover.prove(problem.task(effort))
-        return szs_status(problem, result), szs_answers(problem, result)
+        status, answers = szs_status(problem, result), szs_answers(problem, result)
+        return TptpOutcome(status, answers, (("problem", result),))
+    if ANSWER_LITERALS in (declared(type(prover), "prover") or ()):
+        result = prover.prove(problem.task(effort, answer_literals=True))
+        attempts = (("question", result),)
+        if result.status == PROVED:
+            answers = answer_tuples(result.proof[-1]) if result.proof else None
+            return TptpOutcome("Theorem", answers, attempts)
+        return TptpOutcome(_unproved(result), None, attempts)
     plain = prover.prove(problem.task(effort, answers=False))
     if plain.status != PROVED:
-        return ("CounterSatisfiable" if plain.status == SATURATED else GAVE_UP), None
+        return TptpOutcome(_unproved(plain), None, (("conjecture", plain),))
     budget = min(effort, ANSWER_SEARCH_FACTOR * max(1, plain.effort_used))
     result = prover.prove(problem.task(budget))
-    return "Theorem", szs_answers(problem, result) if result.proved else None
+    answers = szs_answers(problem, result) if result.proved else None
+    return TptpOutcome("Theorem", answers, (("conjecture", plain), ("answer search", result)))
 
 
-def _tptp_term(term: Term) -> str:
+def _unproved(result: ProofResult) -> str:
+    """The SZS status of a question not proved: saturated, its conjecture is false."""
+    return "CounterSatisfiable" if result.status == SATURATED else GAVE_UP
+
+
+def tptp_term(term: Term) -> str:
+    """A term in TPTP syntax: clause variables as ``X0``, ``X1``..., Skolem symbols
+    ``sk!3`` as E names its own, ``esk3_0`` (the number, then the arity)."""
+    if type(term) is int:
+        return f"X{term}"
     if type(term) is tuple:
-        return f"{term[0]}({','.join(_tptp_term(a) for a in term[1:])})"
-    return str(term)
+        functor = _tptp_symbol(term[0], len(term) - 1)
+        return f"{functor}({','.join(tptp_term(a) for a in term[1:])})"
+    return _tptp_symbol(str(term), 0)
+
+
+def _tptp_symbol(symbol: str, arity: int) -> str:
+    if symbol.startswith(SKOLEM_PREFIX):
+        return f"esk{symbol[len(SKOLEM_PREFIX):]}_{arity}"
+    return symbol
+
+
+def answer_tuples(clause: Clause) -> str | None:
+    """The SZS answer of a refutation ending in answer literals: ``[[a, b]|_]`` for one,
+    ``[([a]|[b])|_]`` for a disjunction (E's notation); ``None`` for the empty clause."""
+    tuples = [
+        f"[{', '.join(tptp_term(arg) for arg in atom[1:])}]"
+        for positive, atom in clause.literals
+        if positive and atom[0] == ANSWER
+    ]
+    if not tuples:
+        return None
+    if len(tuples) == 1:
+        return f"[{tuples[0]}|_]"
+    return f"[({'|'.join(tuples)})|_]"
 
 
 def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
@@ -514,7 +624,7 @@ def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
     tuples = []
     for answer in result.answers:
         bound = dict(answer)
-        values = [_tptp_term(bound[p]) if p in bound else "_" for p in params]
+        values = [tptp_term(bound[p]) if p in bound else "_" for p in params]
         tuples.append(f"[{', '.join(values)}]")
     return f"[{', '.join(tuples)}|_]"
 

@@ -15,6 +15,7 @@ from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import (
+    ANSWER,
     EQUALITY,
     Param,
     Term,
@@ -164,7 +165,7 @@ def eligible(
             return (best,)
         if ordered:
             return _maximal(literals)
-    return tuple(range(len(literals)))
+    return tuple(i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER)
 
 
 def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
@@ -172,16 +173,16 @@ def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
     atoms, predicates as head symbols). KBO on terms with variables holds under every
     substitution, so a literal left out is below another in every instance too: it could
     never be the maximal literal an ordered inference needs. Clauses with equations keep
-    all their literals: superposition compares equations as multisets of their sides."""
-    if len(literals) < 2:
-        return tuple(range(len(literals)))
-    atoms = [atom for _, atom in literals]
-    if any(atom[0] == EQUALITY for atom in atoms):
-        return tuple(range(len(literals)))
+    all their literals: superposition compares equations as multisets of their sides.
+    Answer literals (:data:`~strips_framework.logic.terms.ANSWER`) are below every other
+    literal and never resolved upon, so they neither count nor are kept."""
+    positions = [i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER]
+    if len(positions) < 2 or any(literals[i][1][0] == EQUALITY for i in positions):
+        return tuple(positions)
     return tuple(
         i
-        for i, atom in enumerate(atoms)
-        if not any(j != i and greater(other, atom) for j, other in enumerate(atoms))
+        for i in positions
+        if not any(j != i and greater(literals[j][1], literals[i][1]) for j in positions)
     )
 
 
@@ -373,6 +374,8 @@ def factors(given: PClause, limits: Limits, selecting: bool = False) -> Iterator
             other_positive, other = literals[j]
             if other_positive is not positive or other[0] != atom[0] or len(other) != len(atom):
                 continue
+            if atom[0] == ANSWER:
+                continue  # a disjunctive answer is kept as it is (as E does)
             subst: Substitution = dict(given.bindings)
             if unify(atom, other, subst) is None:
                 continue

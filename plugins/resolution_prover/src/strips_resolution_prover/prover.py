@@ -27,6 +27,7 @@ from attrs import define, evolve, field
 from attrs.validators import ge, in_, instance_of, optional
 
 from strips_framework.capabilities import (
+    ANSWER_LITERALS,
     ANSWERS,
     EFFORT_BOUND,
     EQUALITY,
@@ -35,6 +36,7 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.logic.terms import ANSWER
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
     PROVED,
@@ -119,7 +121,15 @@ class ResolutionProver:
     #: With the default options; size limits (``max_clause_literals`` and the like) give
     #: up on what they discard, which keeps the prover sound but not complete.
     capabilities: ClassVar[frozenset[str]] = frozenset(
-        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
+        {
+            EQUALITY,
+            QUANTIFIED_AXIOMS,
+            ANSWERS,
+            ANSWER_LITERALS,
+            UNCOMPLETED_PROOF,
+            SOUND,
+            EFFORT_BOUND,
+        }
     )
 
     pick_given_ratio: int = field(default=5, validator=[instance_of(int), ge(1)])
@@ -145,6 +155,13 @@ class ResolutionProver:
     def open(self, initial: InitialModel, unique_names: bool) -> ResolutionSession:
         """A session on M0, which is imported and indexed here, once."""
         return ResolutionSession(self, initial, unique_names)
+
+
+def refutes(literals: tuple[Literal, ...]) -> bool:
+    """Whether a clause with these literals is a refutation: the empty clause, or only
+    answer literals (:data:`~strips_framework.logic.terms.ANSWER`), whose arguments are
+    then the answer (the clause is the last of the proof)."""
+    return all(positive and atom[0] == ANSWER for positive, atom in literals)
 
 
 def _positives(clause: Clause) -> int:
@@ -378,10 +395,10 @@ def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResul
     sos = evolve(prover, schedule=False, set_of_support=True)
     saturate = evolve(prover, schedule=False, set_of_support=False)
     chosen = plan(task.axioms, task.negated_goal)
-    if chosen == "set-of-support":
-        return sos.prove(task)
-    if chosen == "saturation" or task.effort < 3:
-        return saturate.prove(task)
+    if chosen == "set-of-support" or chosen == "saturation" or task.effort < 3:
+        calculus = sos if chosen == "set-of-support" else saturate
+        result = calculus.prove(task)
+        return evolve(result, phases=((chosen, result.status, result.effort_used),))
     relevant = relevant_axioms(task.axioms, task.negated_goal)
     pruned = evolve(task, axioms=relevant) if len(relevant) < len(task.axioms) else None
     return interleave(task, saturate, sos, pruned)
@@ -411,10 +428,12 @@ def interleave(
     effort = task.effort
     asks = any(has_parameter(atom) for c in task.negated_goal for _, atom in c.literals)
     attempts = [_attempt(saturate, task), _attempt(sos, task)]
+    names = ["saturation", "set-of-support"]
     claims = [True, not asks]
     rest = effort
     if pruned is not None:
         attempts.append(_attempt(saturate, pruned))
+        names.append("saturation of the SInE-relevant axioms")
         claims.append(False)
         rest = effort - max(1, int(effort * PRUNED_SHARE))
     share = max(1, min(rest - 1, int(rest * SATURATION_SHARE)))
@@ -430,13 +449,27 @@ def interleave(
                 continue
             result = attempt.result()
             if result.status == PROVED or (result.status == SATURATED and claims[i]):
-                return evolve(result, effort_used=sum(a.effort for a in attempts))
+                return _schedule_result(result, attempts, names, i)
             live.remove(i)
             _hand_on(bounds[i] - attempt.effort, live, bounds)
             bounds[i] = attempt.effort
         if not live:
             break
-    return evolve(attempts[1].result(), effort_used=sum(a.effort for a in attempts))
+    return _schedule_result(attempts[1].result(), attempts, names, None)
+
+
+def _schedule_result(
+    result: ProofResult, attempts: Sequence[_Saturation], names: Sequence[str], decided: int | None
+) -> ProofResult:
+    """The deciding attempt's result (or the set of support's), with the effort of all
+    and each one's phase: the decider's status (the set of support's when none decided),
+    ``GaveUp`` for the others."""
+    shown = 1 if decided is None else decided
+    phases = tuple(
+        (name, result.status if i == shown else GAVE_UP, attempt.effort)
+        for i, (name, attempt) in enumerate(zip(names, attempts))
+    )
+    return evolve(result, effort_used=sum(a.effort for a in attempts), phases=phases)
 
 
 def _hand_on(unused: int, live: Sequence[int], bounds: list[int]) -> None:
@@ -822,7 +855,7 @@ class _Saturation:
         if simplified is None:
             return
         simplified = self._cut_by_units(simplified, simplified.parents)
-        if not simplified.literals:
+        if refutes(simplified.literals):
             if simplified.bindings not in self.answers and not self._done():
                 self.own.register(simplified)
                 self._record_refutation(simplified)
