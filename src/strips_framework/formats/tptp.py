@@ -629,6 +629,75 @@ def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
     return f"[{', '.join(tuples)}|_]"
 
 
+def parse_answers(text: str) -> list[tuple[Term | Var, ...]]:
+    """The tuples of an SZS answer, ``[[a, f(X1)]|_]`` or ``[([a]|[b])|_]`` (E's
+    notation, and ours): one tuple for a definite answer, several for a disjunction.
+    Variables are :class:`Var`; symbols are as written (``esk1_0`` stays a name)."""
+    text = text.strip()
+    if not text.endswith("|_]"):
+        raise InputError("<answer>", 1, len(text), "expected an answer ending in '|_]'")
+    parser = _Parser(text[:-3], "<answer>")
+    parser.expect("[")
+    disjunctive = parser.at("(")
+    if disjunctive:
+        parser.next()
+    tuples = [_answer_tuple(parser)]
+    while disjunctive and parser.at("|"):
+        parser.next()
+        tuples.append(_answer_tuple(parser))
+    if disjunctive:
+        parser.expect(")")
+    if parser.peek().kind != "end":
+        raise parser.error("'|_]'")
+    return tuples
+
+
+def _answer_tuple(parser: _Parser) -> tuple[Term | Var, ...]:
+    parser.expect("[")
+    terms = [parser.term()]
+    while parser.at(","):
+        parser.next()
+        terms.append(parser.term())
+    parser.expect("]")
+    return tuple(terms)
+
+
+def formula_to_tptp(formula: Formula) -> str:
+    """``formula`` in TPTP's ``fof`` syntax (fully parenthesized), for handing a problem
+    built from a parsed one to another prover (checking an answer with E)."""
+    if isinstance(formula, Truth):
+        return "$true" if formula.value else "$false"
+    if isinstance(formula, Atomic):
+        atom = formula.atom
+        if atom[0] == EQUALITY and len(atom) == 3:
+            return f"({_fof_term(atom[1])} = {_fof_term(atom[2])})"
+        return _fof_term(atom if len(atom) > 1 else atom[0])
+    if isinstance(formula, Not):
+        return f"~ {formula_to_tptp(formula.body)}"
+    if isinstance(formula, (And, Or)):
+        if not formula.parts:
+            return "$true" if isinstance(formula, And) else "$false"
+        op = " & " if isinstance(formula, And) else " | "
+        return "(" + op.join(formula_to_tptp(part) for part in formula.parts) + ")"
+    if isinstance(formula, Implies):
+        return f"({formula_to_tptp(formula.premise)} => {formula_to_tptp(formula.conclusion)})"
+    if isinstance(formula, Iff):
+        return f"({formula_to_tptp(formula.left)} <=> {formula_to_tptp(formula.right)})"
+    if isinstance(formula, (Forall, Exists)):
+        quantifier = "!" if isinstance(formula, Forall) else "?"
+        names = ", ".join(v.name for v in formula.variables)
+        return f"({quantifier} [{names}] : {formula_to_tptp(formula.body)})"
+    raise TypeError(f"not a formula: {formula!r}")
+
+
+def _fof_term(term: Term | Var) -> str:
+    if isinstance(term, Var):
+        return term.name
+    if type(term) is tuple:
+        return f"{term[0]}({','.join(_fof_term(arg) for arg in term[1:])})"
+    return str(term)
+
+
 def szs_report(problem: TptpProblem, result: ProofResult) -> str:
     """The lines a TPTP prover prints: the status and, for questions, the answers."""
     return szs_lines(problem, szs_status(problem, result), szs_answers(problem, result))
