@@ -103,18 +103,19 @@ def prove(planner: Planner, args: argparse.Namespace) -> int:
     name = args.problem.name.removesuffix(".p")
     started = time.process_time()
     outcome = TptpOutcome("GaveUp")
+    settled: list[TptpOutcome] = []  # a question's status, known before its answer search
     try:
         problem = load_tptp(args.problem)
         name = problem.name
         with cpu_limited(args.time):
-            outcome = prove_tptp(prover, problem, effort)
+            outcome = prove_tptp(prover, problem, effort, settled.append)
     except Inappropriate as error:
         print(f"strips: error: {error}", file=sys.stderr)
         outcome = TptpOutcome("Inappropriate")
     except LimitReached:
-        outcome = TptpOutcome("Timeout")
+        outcome = settled[-1] if settled else TptpOutcome("Timeout")
     except MemoryError:
-        outcome = TptpOutcome("MemoryOut")
+        outcome = settled[-1] if settled else TptpOutcome("MemoryOut")
     except KeyboardInterrupt:
         outcome = TptpOutcome("User")
     seconds = time.process_time() - started

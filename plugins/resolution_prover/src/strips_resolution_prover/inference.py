@@ -25,7 +25,7 @@ from strips_framework.logic.terms import (
     variables_of,
 )
 from strips_framework.logic.unify import Substitution, substitute, unify
-from strips_resolution_prover.kbo import greater
+from strips_resolution_prover.kbo import literal_greater
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
 #: Offset added to the given clause's variables; processed clauses number theirs from 0, and
@@ -169,20 +169,21 @@ def eligible(
 
 
 def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
-    """The positions of the literals no other literal of the clause is above in KBO (on
-    atoms, predicates as head symbols). KBO on terms with variables holds under every
-    substitution, so a literal left out is below another in every instance too: it could
-    never be the maximal literal an ordered inference needs. Clauses with equations keep
-    all their literals: superposition compares equations as multisets of their sides.
-    Answer literals (:data:`~strips_framework.logic.terms.ANSWER`) are below every other
-    literal and never resolved upon, so they neither count nor are kept."""
+    """The positions of the literals no other literal of the clause is above in the
+    literal ordering (:func:`~.kbo.literal_greater`: KBO's multiset extension, equations
+    as the multisets of their sides, an atom ``A`` as ``A = TOP``). It holds under every
+    substitution, so a literal left out is below another in every instance too: it
+    could never be the maximal literal an ordered inference (resolution, superposition,
+    paramodulation into a clause) needs. Answer literals
+    (:data:`~strips_framework.logic.terms.ANSWER`) are below every other literal and
+    never resolved upon, so they neither count nor are kept."""
     positions = [i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER]
-    if len(positions) < 2 or any(literals[i][1][0] == EQUALITY for i in positions):
+    if len(positions) < 2:
         return tuple(positions)
     return tuple(
         i
         for i in positions
-        if not any(j != i and greater(literals[j][1], literals[i][1]) for j in positions)
+        if not any(j != i and literal_greater(literals[j], literals[i]) for j in positions)
     )
 
 

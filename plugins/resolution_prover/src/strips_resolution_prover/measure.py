@@ -49,7 +49,7 @@ from strips_framework.logic.terms import Term
 #: Statuses that decide a problem (E's ``ContradictoryAxioms`` proves every conjecture).
 DECIDED = {"Theorem", "Unsatisfiable", "CounterSatisfiable", "Satisfiable", "ContradictoryAxioms"}
 _SZS_STATUS = re.compile(r"^[%#] SZS status (\w+)", re.MULTILINE)
-_SZS_ANSWERS = re.compile(r"^[%#] SZS answers Tuple (\S+)", re.MULTILINE)
+_SZS_ANSWERS = re.compile(r"^[%#] SZS answers Tuple (\[.*\])", re.MULTILINE)
 #: Symbols a prover makes up: E's Skolem functions (``esk3_1``), and ours printed as E's.
 _MADE_UP = re.compile(r"esk\d+_\d+|epred\d+_\d+")
 
@@ -187,7 +187,8 @@ def check_problem(problem: TptpProblem, tuples: list[tuple[Term | Var, ...]]) ->
 def answer_verdict(
     path: Path, ours: str | None, theirs: str | None, eprover: str | None, seconds: float
 ) -> str:
-    """``same as E``, ``proved by E``, ``refuted by E``, ``none`` or ``unchecked``."""
+    """``same as E``, ``proved by E``, ``refuted by E``, ``none`` (no answer of ours) or
+    ``unchecked``."""
     if ours is None:
         return "none"
     if theirs is not None and same_answers(ours, theirs):
@@ -272,7 +273,9 @@ def main(argv: list[str] | None = None) -> int:
         if name.endswith(".q"):
             questions += 1
             verdict = answer_verdict(path, ours.answers, e.answers, eprover, args.time)
-            answered += verdict in ("same as E", "proved by E")
+            if verdict == "none" and e.answers is None and ours.status == expected:
+                verdict = "none, as E"  # a question whose conjecture is false
+            answered += verdict in ("same as E", "proved by E", "none, as E")
         if ours.status in DECIDED and e.status in DECIDED:
             # Below 10 ms a CPU clock reads noise: both sides count as 10 ms at least.
             ratios.append(max(ours.seconds, 0.01) / max(e.seconds, 0.01))
@@ -281,7 +284,10 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{row} {verdict} |", flush=True)
     print(f"\nours: {right}/{total} right, {wrong} wrong" + (f"; E: {e_right}/{total} right" if eprover else ""))
     if questions:
-        print(f"questions answered correctly (checked against E's answers): {answered}/{questions}")
+        print(
+            f"questions answered correctly (the same as E's, proved by E, or none where "
+            f"E has none and the status is right): {answered}/{questions}"
+        )
     if ratios:
         print(
             f"CPU time ours/E, geometric mean over the {len(ratios)} both decide: proving "

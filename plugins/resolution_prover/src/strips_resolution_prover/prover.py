@@ -671,7 +671,7 @@ class _Saturation:
         )
         partners = [c for c in chain(*lists) if c.id not in self.hidden]
         for clause in paramodulants(
-            given, renamed, partners, self.limits, saturating=self.selecting
+            given, renamed, partners, self.limits, saturating=self.selecting, ordered=self.ordered
         ):
             self._add_new(clause)
             if self._done():
