@@ -20,6 +20,14 @@ def _pc(*literals) -> PClause:
     return clause
 
 
+def _rewritten(source: PClause, target: PClause, ordered: bool) -> set:
+    """The literals of the paramodulants from ``source`` into ``target`` (saturating)."""
+    source.id, target.id = 1, 2
+    renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in source.literals)
+    made = paramodulants(source, renamed, [target], Limits(None), saturating=True, ordered=ordered)
+    return {lit for clause in made for lit in clause.literals}
+
+
 def test_the_literal_ordering() -> None:
     # Equations as multisets of their sides; a negative literal above its positive twin;
     # an atom A as A = TOP, below an equation with a bigger side.
@@ -41,16 +49,11 @@ def test_superposition_rewrites_only_from_and_into_maximal_literals() -> None:
     # f(f(a)) = b | c = d: only f(f(a)) = b is maximal, so c = d (oriented d -> c)
     # rewrites nothing; into q(d) | r(f(f(a)), d), only the maximal r(...) is rewritten.
     source = _pc((True, ("=", BIG, "b")), (True, ("=", "c", "d")))
-    source.id = 1
     target = _pc((True, ("q", "d")), (True, ("r", BIG, "d")))
-    target.id = 2
-    renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in source.literals)
-    made = list(paramodulants(source, renamed, [target], Limits(None), saturating=True, ordered=True))
-    rewritten = {lit for clause in made for lit in clause.literals}
+    rewritten = _rewritten(source, target, ordered=True)
     assert (True, ("r", "b", "d")) in rewritten
     assert (True, ("q", "c")) not in rewritten and (True, ("r", BIG, "c")) not in rewritten
-    unordered = list(paramodulants(source, renamed, [target], Limits(None), saturating=True))
-    assert any((True, ("q", "c")) in clause.literals for clause in unordered)
+    assert (True, ("q", "c")) in _rewritten(source, target, ordered=False)
 
 
 def test_maximality_keeps_saturation_sound_and_complete() -> None:
@@ -70,12 +73,7 @@ def test_superposition_rewrites_a_clause_only_in_its_maximal_literals() -> None:
     # d = c (oriented d -> c) into q(d) | r(f(f(a)), d): only the maximal r(...) is
     # rewritten; unordered (with parameters), q(d) too.
     source = _pc((True, ("=", "d", "c")))
-    source.id = 1
     target = _pc((True, ("q", "d")), (True, ("r", BIG, "d")))
-    target.id = 2
-    renamed = tuple((pos, offset(atom, RENAME_OFFSET)) for pos, atom in source.literals)
-    made = list(paramodulants(source, renamed, [target], Limits(None), saturating=True, ordered=True))
-    rewritten = {lit for clause in made for lit in clause.literals}
+    rewritten = _rewritten(source, target, ordered=True)
     assert (True, ("r", BIG, "c")) in rewritten and (True, ("q", "c")) not in rewritten
-    unordered = list(paramodulants(source, renamed, [target], Limits(None), saturating=True))
-    assert any((True, ("q", "c")) in clause.literals for clause in unordered)
+    assert (True, ("q", "c")) in _rewritten(source, target, ordered=False)
