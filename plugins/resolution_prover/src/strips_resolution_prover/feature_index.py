@@ -4,11 +4,11 @@ Vector Indexing", 2004/2013), as E files its clauses for subsumption.
 ``C`` can subsume ``D`` only if every count below is no larger in ``C`` than in ``D``:
 a substitution maps each literal of ``C`` to its own literal of ``D`` with the same sign
 and predicate (multiset subsumption), never removes a symbol, and ``C``'s parameter
-bindings are among ``D``'s. So the clauses are filed in a trie, one level per feature,
-and forward subsumption of ``D`` walks only the branches whose count is at most ``D``'s
-(:meth:`FeatureVectorIndex.at_most`), backward subsumption by ``C`` only those at least
-``C``'s (:meth:`FeatureVectorIndex.at_least`). The features, in the order the trie
-branches on them: positive and negative literals, then per predicate bucket the
+bindings are among ``D``'s. So the clauses are filed by their feature vectors, and
+forward subsumption of ``D`` looks only at the clauses whose counts are all at most
+``D``'s (:meth:`FeatureVectorIndex.at_most`), backward subsumption by ``C`` only at
+those at least ``C``'s (:meth:`FeatureVectorIndex.at_least`). The features: positive
+and negative literals, then per predicate bucket the
 positive and the negative literals (predicates hashed into :data:`BUCKETS` buckets by a
 fixed checksum, so the index is the same in every process), the function and constant
 symbol occurrences, the parameter bindings.
@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import zlib
 from collections.abc import Callable, Iterator
+from operator import ge, le
 from typing import Generic, TypeVar
 
 from strips_framework.logic.clauses import Literal
@@ -57,64 +58,54 @@ def feature_vector(literals: tuple[Literal, ...], bindings: int) -> tuple[int, .
 
 
 class FeatureVectorIndex(Generic[T]):
-    """Items filed by feature vector in a trie of dicts (insertion-ordered, so a walk
-    is deterministic)."""
+    """Items filed by feature vector: a first level by the literal counts per sign, then
+    by the whole vector, each vector's items in insertion order (dicts are too, so a walk
+    is deterministic). E's tries branch on every feature; in Python a walk through
+    twenty levels of generators costs more than it prunes on the small sets a proof
+    attempt keeps, so below the first level the distinct vectors are compared whole."""
 
     def __init__(self) -> None:
-        self._root: dict[int, object] = {}
+        self._by_signs: dict[tuple[int, int], dict[tuple[int, ...], list[T]]] = {}
         self._size = 0
 
     def __len__(self) -> int:
         return self._size
 
     def add(self, vector: tuple[int, ...], item: T) -> None:
-        node = self._root
-        for value in vector[:-1]:
-            node = node.setdefault(value, {})  # type: ignore[assignment]
-        leaf: list[T] = node.setdefault(vector[-1], [])  # type: ignore[assignment]
-        leaf.append(item)
+        vectors = self._by_signs.setdefault((vector[0], vector[1]), {})
+        vectors.setdefault(vector, []).append(item)
         self._size += 1
 
     def at_most(self, vector: tuple[int, ...]) -> Iterator[T]:
         """Items whose every feature is at most ``vector``'s (possible subsumers)."""
-        return self._walk(self._root, vector, 0, lambda key, bound: key <= bound)
+        positives, negatives = vector[0], vector[1]
+        for (p, n), vectors in self._by_signs.items():
+            if p <= positives and n <= negatives:
+                for filed, items in vectors.items():
+                    if all(map(le, filed, vector)):
+                        yield from items
 
     def at_least(self, vector: tuple[int, ...]) -> Iterator[T]:
         """Items whose every feature is at least ``vector``'s (possibly subsumed)."""
-        return self._walk(self._root, vector, 0, lambda key, bound: key >= bound)
-
-    def _walk(
-        self,
-        node: dict[int, object],
-        vector: tuple[int, ...],
-        depth: int,
-        fits: Callable[[int, int], bool],
-    ) -> Iterator[T]:
-        bound = vector[depth]
-        last = depth == len(vector) - 1
-        for key, child in node.items():
-            if not fits(key, bound):
-                continue
-            if last:
-                yield from child  # type: ignore[misc]
-            else:
-                yield from self._walk(child, vector, depth + 1, fits)  # type: ignore[arg-type]
+        positives, negatives = vector[0], vector[1]
+        for (p, n), vectors in self._by_signs.items():
+            if p >= positives and n >= negatives:
+                for filed, items in vectors.items():
+                    if all(map(ge, filed, vector)):
+                        yield from items
 
     def prune(self, keep: Callable[[T], bool]) -> None:
-        """Drop the items ``keep`` rejects (and the branches left empty)."""
-        self._size = self._prune(self._root, keep)
-
-    def _prune(self, node: dict[int, object], keep: Callable[[T], bool]) -> int:
+        """Drop the items ``keep`` rejects (and the vectors left without any)."""
         size = 0
-        for key in list(node):
-            child = node[key]
-            if isinstance(child, list):
-                child[:] = [item for item in child if keep(item)]
-                count = len(child)
-            else:
-                count = self._prune(child, keep)  # type: ignore[arg-type]
-            if count:
-                size += count
-            else:
-                del node[key]
-        return size
+        for signs in list(self._by_signs):
+            vectors = self._by_signs[signs]
+            for filed in list(vectors):
+                kept = [item for item in vectors[filed] if keep(item)]
+                if kept:
+                    vectors[filed] = kept
+                    size += len(kept)
+                else:
+                    del vectors[filed]
+            if not vectors:
+                del self._by_signs[signs]
+        self._size = size

@@ -207,7 +207,6 @@ class SubsumptionIndex:
         if not clause.literals:
             return
         positive, atom = literal = clause.literals[0]
-        vector = clause.vector
         if len(clause.literals) == 1:
             if _is_ground(atom):
                 self._ground_units.setdefault(literal, []).append(clause)
@@ -215,9 +214,9 @@ class SubsumptionIndex:
                 self._units[positive].add(atom, clause)
         else:
             binding = clause.bindings[0] if clause.bindings else None
-            self._forward.setdefault(binding, FeatureVectorIndex()).add(vector, clause)
+            self._forward.setdefault(binding, FeatureVectorIndex()).add(clause.vector, clause)
         if deletable:
-            self._backward.add(vector, clause)
+            self._backward.add(clause.vector, clause)
 
     def is_subsumed_by_unit(self, d: PClause, hidden: AbstractSet[int] = frozenset()) -> bool:
         """Whether a unit clause matches a literal of ``d``. Clauses whose ids are in
