@@ -57,14 +57,18 @@ def test_the_cpu_limit_stops_an_unbounded_search_with_timeout(tmp_path, capsys):
 
 
 def test_the_default_effort_is_not_the_planners(tmp_path, capsys):
-    # 1,000 given clauses and more, past the planner's 300 an attempt ([limits] effort).
-    problem = tmp_path / "ac.p"
-    problem.write_text(ENDLESS)
-    assert main(["prove", str(problem), "--time", "1", "--json"]) == exit_codes.OUT_OF_TIME
-    capsys.readouterr()
-    assert main(["prove", str(problem), "--effort", "300", "--json"]) == 12
+    # A chain of 400 implications needs 400 given clauses and more, past the planner's
+    # 300 an attempt ([limits] effort): proved by default, GaveUp with the planner's.
+    chain = ["cnf(start, axiom, p0)."]
+    chain += [f"cnf(r{i}, axiom, ~p{i} | p{i + 1})." for i in range(400)]
+    chain.append("cnf(goal, negated_conjecture, ~p400).")
+    problem = tmp_path / "chain.p"
+    problem.write_text("\n".join(chain) + "\n")
+    assert main(["prove", str(problem), "--json"]) == 0
     document = json.loads(capsys.readouterr().out)
-    assert document["statistics"]["effort_used"] == 300
+    assert document["status"] == "Unsatisfiable"
+    assert document["statistics"]["effort_used"] > 300
+    assert main(["prove", str(problem), "--effort", "300"]) == exit_codes.UNSOLVED_INCOMPLETE
 
 
 def test_json_gives_status_answers_statistics_and_the_schedules_phases(tmp_path, capsys):
