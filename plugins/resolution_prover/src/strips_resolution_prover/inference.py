@@ -11,6 +11,7 @@ descendants" (paper, III.A).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
+from functools import lru_cache
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
@@ -168,6 +169,7 @@ def eligible(
     return tuple(i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER)
 
 
+@lru_cache(maxsize=1 << 16)
 def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
     """The positions of the literals no other literal of the clause is above in the
     literal ordering (:func:`~.kbo.literal_greater`: KBO's multiset extension, equations
@@ -176,7 +178,9 @@ def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
     could never be the maximal literal an ordered inference (resolution, superposition,
     paramodulation into a clause) needs. Answer literals
     (:data:`~strips_framework.logic.terms.ANSWER`) are below every other literal and
-    never resolved upon, so they neither count nor are kept."""
+    never resolved upon, so they neither count nor are kept. Cached: a retained clause
+    is a paramodulation partner of every later given clause, and the comparisons (KBO
+    on multisets) cost more than hashing its literals."""
     positions = [i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER]
     if len(positions) < 2:
         return tuple(positions)
