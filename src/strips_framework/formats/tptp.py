@@ -467,7 +467,11 @@ class TptpProblem:
         conjectures = [f for f in goals if f.role != "negated_conjecture"]
         if conjectures:
             goal = And(
-                _answer_goal(f) if answer_literals else _goal_body(f) if answers else _close(f.formula)
+                _answer_goal(f)
+                if answer_literals
+                else _goal_body(f)
+                if answers
+                else _close(f.formula)
                 for f in conjectures
             )
             label = ",".join(f.name for f in conjectures)
@@ -476,7 +480,8 @@ class TptpProblem:
         for i, first in enumerate(objects):
             for second in objects[i + 1 :]:
                 unequal = Not(Atomic((EQUALITY, first, second)))
-                (axioms if goals else support).extend(clausify(unequal, label="$distinct", skolem=skolem))
+                clauses = clausify(unequal, label="$distinct", skolem=skolem)
+                (axioms if goals else support).extend(clauses)
         return ProofTask(
             axioms, support, effort=effort, max_answers=max_answers, unique_names=unique_names
         )

@@ -35,7 +35,8 @@ T = TypeVar("T")
 def predicate_bucket(predicate: str, arity: int) -> int:
     found = _bucket_of.get((predicate, arity))
     if found is None:
-        found = _bucket_of[(predicate, arity)] = zlib.crc32(f"{predicate}/{arity}".encode()) % BUCKETS
+        found = zlib.crc32(f"{predicate}/{arity}".encode()) % BUCKETS
+        _bucket_of[(predicate, arity)] = found
     return found
 
 

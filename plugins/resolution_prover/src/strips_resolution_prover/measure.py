@@ -120,19 +120,14 @@ def same_answers(ours: str, theirs: str) -> bool:
     mine, other = parse_answers(ours), parse_answers(theirs)
     if len(mine) != len(other):
         return False
-    return any(
-        _rename_all(
-            [t for pair in zip(mine, permuted) for t in zip(*pair)]
-            if all(len(x) == len(y) for x, y in zip(mine, permuted))
-            else None
-        )
-        for permuted in itertools.permutations(other)
-    )
-
-
-def _rename_all(pairs: list[tuple[Term | Var, Term | Var]] | None) -> bool:
-    names: dict[tuple[str, object], object] = {}
-    return pairs is not None and all(_rename(a, b, names) for a, b in pairs)
+    for permuted in itertools.permutations(other):
+        if any(len(x) != len(y) for x, y in zip(mine, permuted)):
+            continue
+        names: dict[tuple[str, object], object] = {}
+        pairs = (pair for x, y in zip(mine, permuted) for pair in zip(x, y))
+        if all(_rename(a, b, names) for a, b in pairs):
+            return True
+    return False
 
 
 def _made_up(term: object) -> bool:
@@ -282,7 +277,8 @@ def main(argv: list[str] | None = None) -> int:
             process_ratios.append(max(ours.process_seconds, 0.01) / max(e.seconds, 0.01))
         row += f" {e.status} | {e.seconds:.2f} | {ours.answers or ''} | {e.answers or ''} |"
         print(f"{row} {verdict} |", flush=True)
-    print(f"\nours: {right}/{total} right, {wrong} wrong" + (f"; E: {e_right}/{total} right" if eprover else ""))
+    e_line = f"; E: {e_right}/{total} right" if eprover else ""
+    print(f"\nours: {right}/{total} right, {wrong} wrong{e_line}")
     if questions:
         print(
             f"questions answered correctly (the same as E's, proved by E, or none where "
