@@ -17,13 +17,15 @@ import argparse
 import sys
 import time
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from strips_framework.cli import exit_codes
-from strips_framework.formats.tptp import TptpOutcome
 from strips_framework.limits import LimitReached
-from strips_framework.planner import Planner
 from strips_framework.plugin.config import Choice
+
+if TYPE_CHECKING:  # the TPTP reader only when proving: `strips solve` starts without it
+    from strips_framework.formats.tptp import TptpOutcome
+    from strips_framework.planner import Planner
 
 #: ``strips prove``'s default CPU time limit in seconds: a TPTP prover's, not the
 #: planner's per-attempt effort (which a TPTP problem would outgrow).
@@ -91,7 +93,7 @@ def prove(planner: Planner, args: argparse.Namespace) -> int:
     """``strips prove``: the problem posed within the CPU limit; the SZS lines (or JSON)
     printed whatever happens, and the exit code by the status (:data:`exit_codes.BY_SZS`)."""
     from strips_framework.cli.process_limits import cpu_limited
-    from strips_framework.formats.tptp import Inappropriate, load_tptp, prove_tptp
+    from strips_framework.formats.tptp import Inappropriate, TptpOutcome, load_tptp, prove_tptp
 
     config = planner.config
     if args.prover is not None and args.prover != config.choices["prover"].name:
