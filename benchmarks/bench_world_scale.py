@@ -4,6 +4,7 @@ axioms), per size the load time, the prover session's opening
 (M0 imported and indexed once), proof attempts, time per attempt and memory.
 
     .venv/bin/python benchmarks/bench_world_scale.py            # the table, up to 100,000
+    .venv/bin/python benchmarks/bench_world_scale.py --provers=resolution,z3,eprover 100 1000
     .venv/bin/python -m pytest benchmarks/bench_world_scale.py --benchmark-only
 
 The paper's claim (III.D) is that a proof costs the same at any |M0|, since every model
@@ -47,16 +48,22 @@ def _peak_mib() -> float:
 
 
 def measure(
-    size: int, folder: Path, goal: str = "boxes", nodes: int = 400, rooms: int | None = None
+    size: int,
+    folder: Path,
+    goal: str = "boxes",
+    nodes: int = 400,
+    rooms: int | None = None,
+    prover: str = "resolution",
 ) -> dict[str, float]:
     """Load, open and solve the generated world of ``size`` formulas (``rooms`` extra
-    rooms, :func:`robot_world`'s default when None); the figures."""
+    rooms, :func:`robot_world`'s default when None) with ``prover``; the figures."""
     path = folder / f"world-{size}-{goal}-{rooms}.strips"
     text = robot_world(size, rooms)
     if goal == "five-goals":
         text = text.replace("goal NEXTTO(BOX1, BOX2) & NEXTTO(BOX2, BOX3)", f"goal {FIVE_GOALS}")
     path.write_text(text)
-    planner = Planner.create(Config.from_dict({"limits": {"nodes": nodes, "time": 600}}))
+    limits = {"nodes": nodes, "time": 600}
+    planner = Planner.create(Config.from_dict({"limits": limits, "prover": {"name": prover}}))
     started = time.perf_counter()
     problem = planner.load(path)
     loaded = time.perf_counter()
@@ -98,11 +105,29 @@ def test_world_scale(benchmark, size: int, tmp_path: Path) -> None:  # type: ign
     assert figures["solved"] and figures["nodes"] == 9  # the same search at every size
 
 
+def provers_per_attempt(sizes: list[int], provers: list[str], folder: Path) -> None:
+    """``--provers a,b,...``: the boxes task at each size with each prover, per attempt."""
+    print("formulas  prover      nodes  attempts  ms/attempt  x resolution")
+    for size in sizes:
+        base = None
+        for prover in provers:
+            f = measure(size, folder, prover=prover)
+            base = base or f["ms_per_attempt"]
+            print(
+                f"{f['formulas']:8.0f}  {prover:<10} {f['nodes']:6.0f} {f['attempts']:9.0f}"
+                f" {f['ms_per_attempt']:11.3f} {f['ms_per_attempt'] / base:12.1f}"
+            )
+
+
 def main() -> None:
     import tempfile
 
     folder = Path(tempfile.mkdtemp())
-    sizes = [int(arg) for arg in sys.argv[1:]] or list(SIZES)
+    args = sys.argv[1:]
+    if args and args[0].startswith("--provers="):
+        sizes = [int(arg) for arg in args[1:]] or list(SIZES[:2])
+        return provers_per_attempt(sizes, args[0].split("=", 1)[1].split(","), folder)
+    sizes = [int(arg) for arg in args] or list(SIZES)
     print("formulas   load s   open s  nodes  attempts  ms/attempt  peak MiB")
     for size in sizes:
         f = measure(size, folder)

@@ -30,6 +30,7 @@ UNCOMPLETED_PROOF = "uncompleted-proof"
 SOUND = "sound"
 COMPLETE = "complete"
 EFFORT_BOUND = "effort-bound"
+ANSWER_LITERALS = "answer-literals"
 # Evaluators and state heuristics
 ADMISSIBLE = "admissible"
 PREFERRED_OPERATORS = "preferred-operators"
@@ -54,6 +55,9 @@ VOCABULARY: dict[str, dict[str, str]] = {
         "among the answers is found when max_answers allows",
         EFFORT_BOUND: "task.effort bounds the work deterministically: the same task gives "
         "the same result, and effort_used never exceeds effort",
+        ANSWER_LITERALS: "a clause of positive $answer literals alone (logic.terms.ANSWER) "
+        "is a refutation, the last clause of result.proof; $answer literals are never "
+        "resolved upon, so a TPTP question gets answers as E gives them",
     },
     "evaluator": {
         ADMISSIBLE: "the score never exceeds the cost so far plus the least cost still "

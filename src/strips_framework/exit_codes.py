@@ -19,6 +19,13 @@ shell's code for Ctrl-C.
 130  interrupted (Ctrl-C): the statistics so far are printed first (128 + SIGINT, as a
      shell reports it)
 ===  ==========================================================================
+
+``strips prove`` exits by the SZS status it prints (:data:`BY_SZS`), as E does for the
+first two: 0 ``Theorem``/``Unsatisfiable`` (a proof), 1 ``CounterSatisfiable``/
+``Satisfiable`` (saturated: no proof exists), 12 ``GaveUp`` (the effort bound was spent
+without deciding), 13 ``Inappropriate`` (a defined symbol such as ``$sum`` that no prover
+interprets), 22 ``MemoryOut``, 23 ``Timeout`` (the ``--time`` CPU limit), 130 ``User``
+(Ctrl-C); a syntax error is 2 and a plugin's exception 32, as for every command.
 """
 
 from __future__ import annotations
@@ -45,6 +52,23 @@ BY_STATUS: dict[Status, int] = {
     Status.MEMORY_LIMIT: OUT_OF_MEMORY,
     Status.TIME_LIMIT: OUT_OF_TIME,
     Status.INTERRUPTED: INTERRUPTED,
+}
+
+
+DISPROVED = 1
+INAPPROPRIATE = 13
+
+#: The exit code of ``strips prove`` for each SZS status it prints.
+BY_SZS: dict[str, int] = {
+    "Theorem": SOLVED,
+    "Unsatisfiable": SOLVED,
+    "CounterSatisfiable": DISPROVED,
+    "Satisfiable": DISPROVED,
+    "GaveUp": UNSOLVED_INCOMPLETE,
+    "Inappropriate": INAPPROPRIATE,
+    "MemoryOut": OUT_OF_MEMORY,
+    "Timeout": OUT_OF_TIME,
+    "User": INTERRUPTED,
 }
 
 

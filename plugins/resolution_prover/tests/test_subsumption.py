@@ -18,6 +18,7 @@ from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param
 from strips_framework.worldmodel.proving import GAVE_UP, ProofTask
 from strips_resolution_prover import ResolutionProver
+from strips_resolution_prover.feature_index import FeatureVectorIndex, predicate_bucket
 from strips_resolution_prover.pclause import PClause, from_clause
 from strips_resolution_prover.subsumption import (
     MATCH_BUDGET,
@@ -177,3 +178,80 @@ def _renumbered(atom: tuple) -> tuple:
     clause = from_clause(Clause([(True, atom)]), sos=True)
     assert clause is not None
     return clause.literals[0][1]
+
+
+FUNCTION_LITERALS = st.tuples(
+    st.booleans(),
+    st.sampled_from(["P", "Q", "R", "S"]).flatmap(
+        lambda p: st.tuples(st.just(p), TERMS, st.one_of(TERMS, st.tuples(st.just("g"), TERMS)))
+    ),
+)
+
+
+@settings(max_examples=200, derandomize=True, database=None, deadline=None)
+@given(
+    kept=st.lists(st.lists(FUNCTION_LITERALS, min_size=2, max_size=3, unique=True), max_size=8),
+    d=st.lists(FUNCTION_LITERALS, min_size=2, max_size=4, unique=True),
+)
+def test_the_feature_vector_index_finds_every_subsumer_and_every_subsumed(
+    kept: list[list[Literal]], d: list[Literal]
+) -> None:
+    # Forward: the index shows d subsumed iff some kept clause subsumes it. Backward:
+    # it yields exactly the kept clauses d subsumes. Whatever a feature (literals per
+    # sign and predicate bucket, symbols, bindings) prunes must not be a subsumer.
+    index = SubsumptionIndex()
+    clauses = []
+    for n, literals in enumerate(kept):
+        clause = from_clause(Clause(literals), sos=True)
+        if clause is None:
+            continue
+        clause.id = n
+        index.add(clause, deletable=True)
+        clauses.append(clause)
+    target = from_clause(Clause(d), sos=True)
+    if target is None:
+        return
+    target.id = len(kept)
+    expected = any(_by_definition(c, target) for c in clauses)
+    assert index.is_subsumed(target, MatchWork()) == expected
+    backward = {c.id for c in index.subsumed_by(target, MatchWork())}
+    assert backward == {c.id for c in clauses if _by_definition(target, c)}
+
+
+def test_the_index_never_offers_a_clause_with_more_of_a_feature() -> None:
+    # Candidates the trie walk offers, before any test on them: P(X) | P(Y) has two
+    # positive P literals, more than P(a) | Q(a); P(X) | ~Q(Y) has a positive P, which
+    # ~P(a) | Q(b) has not (same counts per sign, other predicates per sign).
+    assert predicate_bucket("P", 2) != predicate_bucket("Q", 2)
+    index = FeatureVectorIndex[str]()
+    two_p = _clause((True, ("P", 0, 0)), (True, ("P", 1, 1)))
+    p_not_q = _clause((True, ("P", 0, 0)), (False, ("Q", 1, 1)))
+    index.add(two_p.vector, "two P")
+    index.add(p_not_q.vector, "P, not Q")
+    assert list(index.at_most(_clause((True, ("P", "a", "a")), (True, ("Q", "a", "a"))).vector)) == []
+    assert list(index.at_most(_clause((False, ("P", "a", "a")), (True, ("Q", "b", "b"))).vector)) == []
+    assert list(index.at_most(_clause((True, ("P", "a", "a")), (True, ("P", "b", "b"))).vector)) == [
+        "two P"
+    ]
+
+
+def test_backward_subsumption_finds_the_longer_clauses_it_subsumes() -> None:
+    index = SubsumptionIndex()
+    longer = _clause((True, ("P", "a")), (True, ("Q", "a")), (True, ("R", "b")))
+    longer.id = 1
+    index.add(longer, deletable=True)
+    general = _clause((True, ("P", 0)), (True, ("Q", 0)))
+    general.id = 2
+    assert list(index.subsumed_by(general, MatchWork())) == [longer]
+
+
+def test_a_clause_with_a_binding_subsumes_one_with_the_same_binding() -> None:
+    # Filed under its binding m := a, found from the subsumed clause's own bindings.
+    index = SubsumptionIndex()
+    subsumer = _clause((False, ("P", 0)), (False, ("Q", 0)), bindings=((M, "a"),))
+    subsumer.id = 1
+    index.add(subsumer, deletable=True)
+    target = _clause((False, ("P", "b")), (False, ("Q", "b")), bindings=((M, "a"),))
+    assert index.is_subsumed(target, MatchWork())
+    other = _clause((False, ("P", "b")), (False, ("Q", "b")), bindings=((M, "c"),))
+    assert not index.is_subsumed(other, MatchWork())

@@ -129,7 +129,8 @@ def test_every_question_gets_its_status(path: Path) -> None:
     # A floor for all 13: the conjecture first, then the bounded answer search (a
     # question whose answer search ran first used to spend the effort there).
     problem = load_tptp(path)
-    status, answers = prove_tptp(ResolutionProver(), problem, EFFORT)
+    outcome = prove_tptp(ResolutionProver(), problem, EFFORT)
+    status, answers = outcome.status, outcome.answers
     assert status == _AS_CONJECTURE[_expected()[problem.name.removesuffix(".q")]]
     if problem.name in ANSWERED["auto"]:
         assert answers

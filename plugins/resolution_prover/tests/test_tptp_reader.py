@@ -31,6 +31,10 @@ from strips_resolution_prover import ResolutionProver
 X, Y = Var("X"), Var("Y")
 
 
+def _pair(outcome) -> tuple[str, str | None]:
+    return outcome.status, outcome.answers
+
+
 def only_formula(text: str):
     return parse_tptp(text).formulas[0].formula
 
@@ -137,28 +141,31 @@ def test_saturated_question_gives_up() -> None:
 
 QUESTIONS = {
     # Only a Skolem term witnesses it: E answers [[esk1_0]|_].
-    "skolem": "fof(a, axiom, ? [X] : p(X)).\nfof(q, question, ? [Y] : p(Y)).",
+    "skolem": ("fof(a, axiom, ? [X] : p(X)).\nfof(q, question, ? [Y] : p(Y)).", "[[esk1_0]|_]"),
     # p(a) | p(b): E answers [([a]|[b])|_], a disjunction, no one binding.
-    "disjunctive": "cnf(a, axiom, p(a) | p(b)).\nfof(q, question, ? [X] : p(X)).",
+    "disjunctive": (
+        "cnf(a, axiom, p(a) | p(b)).\nfof(q, question, ? [X] : p(X)).",
+        "[([a]|[b])|_]",
+    ),
 }
 
 
-@pytest.mark.parametrize("text", QUESTIONS.values(), ids=list(QUESTIONS))
-def test_a_theorem_without_a_definite_answer_binds_no_parameter(text: str) -> None:
-    # The TPTP side: the conjecture is a theorem, reported as E does, but without a
-    # tuple (ours gives definite answers only). The planner's side: no binding (III.A).
+@pytest.mark.parametrize(("text", "answer"), QUESTIONS.values(), ids=list(QUESTIONS))
+def test_a_theorem_without_a_definite_answer_binds_no_parameter(text: str, answer: str) -> None:
+    # The TPTP side: the conjecture is a theorem, answered as E does (answer literals).
+    # The planner's side: parameters, and no binding (III.A).
     problem = parse_tptp(text)
-    assert prove_tptp(ResolutionProver(), problem, 100) == ("Theorem", None)
+    assert _pair(prove_tptp(ResolutionProver(), problem, 100)) == ("Theorem", answer)
     result = ResolutionProver().prove(problem.task(100, max_answers=3))
     assert not result.proved and result.answers == ()
 
 
 def test_a_question_is_answered_definitely_or_refuted() -> None:
     answered = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : p(X)).")
-    assert prove_tptp(ResolutionProver(), answered, 100) == ("Theorem", "[[a]|_]")
+    assert _pair(prove_tptp(ResolutionProver(), answered, 100)) == ("Theorem", "[[a]|_]")
     # No instance follows and the conjecture itself does not: the answer is "no".
     false = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : r(X)).")
-    assert prove_tptp(ResolutionProver(), false, 100) == ("CounterSatisfiable", None)
+    assert _pair(prove_tptp(ResolutionProver(), false, 100)) == ("CounterSatisfiable", None)
 
 
 class _Recording:
@@ -179,14 +186,14 @@ def test_the_conjecture_goes_first_and_bounds_the_answer_search() -> None:
     # definite answer exists, so the answer search would spend the whole effort.
     problem = parse_tptp("cnf(a, axiom, p(a) | p(b)).\nfof(q, question, ? [X] : p(X)).")
     prover = _Recording()
-    assert prove_tptp(prover, problem, 10_000) == ("Theorem", None)
+    assert _pair(prove_tptp(prover, problem, 10_000)) == ("Theorem", None)
     (plain, proof_effort, used), (asks, answer_effort, _) = prover.calls
     assert not plain and asks
     assert answer_effort == ANSWER_SEARCH_FACTOR * max(1, used) < 10_000
     # A false conjecture has no answer to look for: one attempt only.
     prover = _Recording()
     false = parse_tptp("cnf(a, axiom, p(a)).\nfof(q, question, ? [X] : r(X)).")
-    assert prove_tptp(prover, false, 10_000) == ("CounterSatisfiable", None)
+    assert _pair(prove_tptp(prover, false, 10_000)) == ("CounterSatisfiable", None)
     assert [asks for asks, _, _ in prover.calls] == [False]
 
 

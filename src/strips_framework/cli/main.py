@@ -16,12 +16,13 @@ from strips_framework.bench import command as bench_command
 from strips_framework import exit_codes
 from strips_framework.cli import report
 from strips_framework.cli import macrops as macrop_command
+from strips_framework.cli import prove as prove_command
 from strips_framework.errors import StripsError
 from strips_framework.limits import Clock, LimitReached
 from strips_framework.options import declared
 from strips_framework.pddl.files import is_pddl
 from strips_framework.planner import Planner
-from strips_framework.plugin.config import Choice, Config
+from strips_framework.plugin.config import Config
 from strips_framework.plugin.registry import KINDS, Registration, Registry
 from strips_framework.result import Result, Status
 from strips_framework.user_files import check_writable, write_atomically
@@ -41,7 +42,8 @@ def _parser(command: str | None = None) -> argparse.ArgumentParser:
         "with state heuristics on PDDL tasks.",
         epilog="exit codes: 0 plan found, 1 invalid plan (validate), 2 bad input or config, "
         "11 unsolvable, 12 search ended without a plan (incomplete), 22 out of memory, "
-        "23 out of time, 32 a plugin raised an exception, 130 interrupted (Ctrl-C)",
+        "23 out of time, 32 a plugin raised an exception, 130 interrupted (Ctrl-C); "
+        "'strips prove' exits by SZS status (see 'strips prove --help')",
     )
     parser.add_argument("--version", action="version", version=f"strips {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
@@ -75,18 +77,6 @@ def _add_solve(commands: argparse._SubParsersAction) -> None:
                        help="use the MACROPs of this library (see 'strips learn')")
 
 
-def _add_prove(commands: argparse._SubParsersAction) -> None:
-    prove = commands.add_parser("prove", help="prove a TPTP problem and print its SZS status")
-    prove.add_argument("problem", type=Path, help="TPTP file (cnf/fof)")
-    prove.add_argument("--config", type=Path, help="TOML config choosing the prover")
-    prove.add_argument(
-        "--effort", type=_positive, help="prover effort (default: [limits] effort)"
-    )
-    prove.add_argument(
-        "--prover", help="a registered prover by name (default: the config's [prover] name)"
-    )
-
-
 def _add_validate(commands: argparse._SubParsersAction) -> None:
     validate = commands.add_parser(
         "validate", help="replay a plan in the independent simulator and check the goal"
@@ -108,7 +98,7 @@ def _add_plugins(commands: argparse._SubParsersAction) -> None:
 #: Each command's parser, in the order ``strips --help`` lists them.
 COMMAND_PARSERS = {
     "solve": _add_solve,
-    "prove": _add_prove,
+    "prove": prove_command.add_parser,
     "validate": _add_validate,
     "bench": bench_command.add_parser,
     "learn": macrop_command.add_learn,
@@ -116,17 +106,6 @@ COMMAND_PARSERS = {
     "execute": macrop_command.add_execute,
     "plugins": _add_plugins,
 }
-
-
-def _positive(text: str) -> int:
-    """An argparse type: an integer >= 1 (a bad one is a usage error, not a traceback)."""
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}")
-    return value
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -150,7 +129,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.command == "solve":
             return _solve(planner, args)
         if args.command == "prove":
-            return _prove(planner, args)
+            return prove_command.prove(planner, args)
         if args.command == "validate":
             return _validate(planner, args)
         return MACROP_COMMANDS[args.command](planner, args)
@@ -285,21 +264,6 @@ def _write_files(args: argparse.Namespace, problem: Path, result: Result) -> Non
         from strips_framework.formats.ipc import plan_text  # only --plan-file needs it
 
         write_atomically(args.plan_file, plan_text(result.plan, result.cost, result.uses_costs), "the plan")
-
-
-def _prove(planner: Planner, args: argparse.Namespace) -> int:
-    from strips_framework.formats.tptp import load_tptp, prove_tptp, szs_lines
-
-    problem = load_tptp(args.problem)
-    effort = args.effort if args.effort is not None else planner.config.limits.effort
-    config = planner.config
-    if args.prover is not None and args.prover != config.choices["prover"].name:
-        # Another prover than the config's: with its own defaults, not the config's options.
-        choices = {**config.choices, "prover": Choice("prover", args.prover)}
-        config = config._replace(choices=choices)
-    status, answers = prove_tptp(config.build(planner.registry, "prover"), problem, effort)
-    print(szs_lines(problem, status, answers))
-    return 0
 
 
 def _validate(planner: Planner, args: argparse.Namespace) -> int:

@@ -75,3 +75,35 @@ def enforced(limits: Limits, clock: Clock) -> Iterator[None]:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old_handler)
         resource.setrlimit(resource.RLIMIT_AS, old_memory)
+
+
+#: The wall-clock safety net of :func:`cpu_limited`: this many times the CPU limit...
+WALL_FACTOR = 4
+#: ... plus this many seconds.
+WALL_EXTRA = 5.0
+
+
+def _out_of_cpu(signum: int, frame: FrameType | None) -> None:
+    raise LimitReached(Status.TIME_LIMIT)
+
+
+@contextmanager
+def cpu_limited(seconds: float) -> Iterator[None]:
+    """Raise :class:`LimitReached` wherever the process is once it has used ``seconds``
+    of CPU time in the block (``strips prove --time``: a prover's limit is CPU time, as
+    E's and Vampire's, so a loaded machine slows a run but does not change its result).
+    A prover that runs a child process (E) is stopped by a wall-clock alarm at
+    :data:`WALL_FACTOR` times the limit plus :data:`WALL_EXTRA` seconds, since the
+    child's CPU time is not the process's (generous: on a machine shared with other
+    jobs our own CPU time runs far slower than the wall clock)."""
+    old_prof = signal.signal(signal.SIGPROF, _out_of_cpu)
+    old_alarm = signal.signal(signal.SIGALRM, _out_of_cpu)
+    signal.setitimer(signal.ITIMER_PROF, seconds)
+    signal.setitimer(signal.ITIMER_REAL, WALL_FACTOR * seconds + WALL_EXTRA)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGPROF, old_prof)
+        signal.signal(signal.SIGALRM, old_alarm)

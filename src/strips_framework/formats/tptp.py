@@ -17,10 +17,13 @@ support.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from pathlib import Path
+from typing import TypeVar
 
 from attrs import frozen
 
+from strips_framework.capabilities import ANSWER_LITERALS, declared
 from strips_framework.errors import InputError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
@@ -38,7 +41,7 @@ from strips_framework.logic.formulas import (
     Var,
     substitute_free,
 )
-from strips_framework.logic.terms import EQUALITY, Param, Term
+from strips_framework.logic.terms import ANSWER, EQUALITY, SKOLEM_PREFIX, Param, Term
 from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
@@ -69,6 +72,12 @@ _TOKEN = re.compile(
 )
 
 _BINARY = {"=>", "<=", "<=>", "<~>", "~|", "~&"}
+_T = TypeVar("_T")
+
+
+class Inappropriate(InputError):
+    """Input in a language the provers do not handle (SZS status ``Inappropriate``), as
+    opposed to a syntax error: a defined symbol such as ``$sum``."""
 
 
 @frozen
@@ -119,6 +128,8 @@ class _Parser:
         self.tokens = _tokenize(text, path)
         self.pos = 0
         self.depth = 0  # parenthesized formulas, negations, quantifiers and terms being read
+        #: Distinct objects (``"abc"``) and numbers met, in order: pairwise distinct.
+        self.distinct: dict[str, None] = {}
 
     # -- token helpers --------------------------------------------------------------------
 
@@ -135,6 +146,19 @@ class _Parser:
         found = repr(token.text) if token.kind != "end" else "end of file"
         return InputError(
             self.path, token.line, token.column, f"expected {expected}, found {found}"
+        )
+
+    def uninterpreted(self, token: _Token) -> Inappropriate:
+        """A defined (``$sum``, ``$less``, ``$int``) or system (``$$...``) symbol: it has
+        a meaning (arithmetic, types) that the provers do not interpret, and reading it as
+        an uninterpreted symbol would make saturation claim Satisfiable of a problem
+        whose arithmetic it ignored."""
+        return Inappropriate(
+            self.path,
+            token.line,
+            token.column,
+            f"the defined symbol {token.text} is not supported (only $true and $false are "
+            "interpreted; arithmetic and types are not)",
         )
 
     def expect(self, text: str) -> _Token:
@@ -261,13 +285,17 @@ class _Parser:
         return inner
 
     def variable_list(self) -> list[Var]:
+        return self.bracketed(self.variable)
+
+    def bracketed(self, item: Callable[[], _T]) -> list[_T]:
+        """``[item, item, ...]``: one or more."""
         self.expect("[")
-        variables = [self.variable()]
+        items = [item()]
         while self.at(","):
             self.next()
-            variables.append(self.variable())
+            items.append(item())
         self.expect("]")
-        return variables
+        return items
 
     def variable(self) -> Var:
         token = self.next()
@@ -280,6 +308,8 @@ class _Parser:
         if token.kind == "dollar" and token.text in ("$true", "$false"):
             self.next()
             return Truth(token.text == "$true")
+        if token.kind == "dollar":
+            raise self.uninterpreted(token)
         if token.kind not in ("word", "quoted", "var", "distinct", "number", "dollar"):
             raise self.error("a formula")
         left = self.term()
@@ -296,11 +326,14 @@ class _Parser:
         if token.kind == "var":
             return Var(token.text)
         if token.kind in ("distinct", "number"):
+            self.distinct[token.text] = None
             return token.text
         if token.kind == "quoted":
             symbol = _unquote(token.text)
-        elif token.kind in ("word", "dollar"):
+        elif token.kind == "word":
             symbol = token.text
+        elif token.kind == "dollar":
+            raise self.uninterpreted(token)
         else:
             raise self.error("a term", token)
         if not self.at("("):
@@ -379,6 +412,11 @@ class TptpProblem:
 
     path: str
     formulas: tuple[TptpFormula, ...]
+    #: The distinct objects (``"abc"``) and numbers the formulas name. TPTP interprets
+    #: them as themselves, so two different ones are unequal: :meth:`task` adds that as
+    #: axioms, since without them saturation could claim Satisfiable of ``"a" = "b"``.
+    #: (Arithmetic on numbers, ``$sum`` and the like, is refused when read.)
+    distinct_objects: tuple[str, ...] = ()
 
     @property
     def name(self) -> str:
@@ -405,12 +443,16 @@ class TptpProblem:
         max_answers: int = 1,
         unique_names: bool = False,
         answers: bool = True,
+        answer_literals: bool = False,
     ) -> ProofTask:
         """The proof task: negated goals are the set of support, the rest are axioms.
 
         Several conjectures are proved together (TPTP: their conjunction is the goal), so
         their conjunction is negated as one formula. ``answers`` false keeps a question's
         variables existential: the conjecture alone, without parameters to bind.
+        ``answer_literals`` keeps them variables and records them in an answer literal
+        instead (``? [X] : F(X)`` is negated as ``! [X] : (~F(X) | $answer(X))``, E's
+        way), for a prover that declares ``answer-literals``.
         """
         skolem = SkolemNames()
         axioms: list[Clause] = []
@@ -424,9 +466,22 @@ class TptpProblem:
                 (axioms if goals else support).extend(clauses)
         conjectures = [f for f in goals if f.role != "negated_conjecture"]
         if conjectures:
-            goal = And(_goal_body(f) if answers else _close(f.formula) for f in conjectures)
+            goal = And(
+                _answer_goal(f)
+                if answer_literals
+                else _goal_body(f)
+                if answers
+                else _close(f.formula)
+                for f in conjectures
+            )
             label = ",".join(f.name for f in conjectures)
             support.extend(clausify(Not(goal), label=label, skolem=skolem))
+        objects = self.distinct_objects
+        for i, first in enumerate(objects):
+            for second in objects[i + 1 :]:
+                unequal = Not(Atomic((EQUALITY, first, second)))
+                clauses = clausify(unequal, label="$distinct", skolem=skolem)
+                (axioms if goals else support).extend(clauses)
         return ProofTask(
             axioms, support, effort=effort, max_answers=max_answers, unique_names=unique_names
         )
@@ -440,9 +495,21 @@ def _goal_body(f: TptpFormula) -> Formula:
     return _close(substitute_free(f.formula.body, params))
 
 
+def _answer_goal(f: TptpFormula) -> Formula:
+    """A question ``? [X] : F(X)`` as ``? [X] : (F(X) & ~$answer(X))``, whose negation
+    puts ``$answer(X)`` into every clause of the negated question; other goals as is."""
+    if f.role != "question" or not isinstance(f.formula, Exists):
+        return _close(f.formula)
+    variables = tuple(f.formula.variables)
+    answer = Not(Atomic((ANSWER, *variables)))
+    return _close(Exists(variables, And((f.formula.body, answer))))
+
+
 def parse_tptp(text: str, path: str = "<string>") -> TptpProblem:
     """Parse TPTP text; raise :class:`InputError` at the first token that does not fit."""
-    return TptpProblem(path, tuple(_Parser(text, path).file()))
+    parser = _Parser(text, path)
+    formulas = tuple(parser.file())
+    return TptpProblem(path, formulas, tuple(parser.distinct))
 
 
 def load_tptp(path: str | Path) -> TptpProblem:
@@ -466,44 +533,112 @@ def szs_status(problem: TptpProblem, result: ProofResult) -> str:
 
 
 #: How many times the given clauses of the conjecture's proof the search for a definite
-#: answer gets (see :func:`prove_tptp`). The answered questions of the TPTP dev set need
-#: up to 5 times (SYN031-1.q: 12 for the proof, 58 for the answer); 8 leaves room.
+#: answer gets, for a prover without answer literals (see :func:`prove_tptp`). The
+#: answered questions of the TPTP dev set need up to 5 times (SYN031-1.q: 12 for the
+#: proof, 58 for the answer); 8 leaves room.
 ANSWER_SEARCH_FACTOR = 8
 
 
-def prove_tptp(prover: TheoremProver, problem: TptpProblem, effort: int) -> tuple[str, str | None]:
-    """``problem`` posed to ``prover``: its SZS status and answer tuples (or ``None``).
+@frozen
+class TptpOutcome:
+    """What :func:`prove_tptp` found: the SZS status, the answer tuples (``None`` when
+    there are none) and each proof attempt made, named (``problem``, ``question`` with
+    answer literals, or ``conjecture`` then ``answer search`` with parameters)."""
+
+    status: str
+    answers: str | None = None
+    attempts: tuple[tuple[str, ProofResult], ...] = ()
+
+    @property
+    def effort_used(self) -> int:
+        return sum(result.effort_used for _, result in self.attempts)
+
+
+def prove_tptp(
+    prover: TheoremProver,
+    problem: TptpProblem,
+    effort: int,
+    settled: Callable[[TptpOutcome], None] | None = None,
+) -> TptpOutcome:
+    """``problem`` posed to ``prover``: its SZS status and answer tuples.
 
     A TPTP user asks whether the conjecture is a theorem, and for a question which
-    instance: E answers ``Theorem`` with a definite tuple, a Skolem term or a disjunction
-    of tuples (``[([a]|[b])|_]``). Ours reports definite answers only, the ones a STRIPS
-    planner may bind (paper, III.A), found by asking with the variables as parameters.
-    That search is a restriction of the conjecture's (a parameter takes one ground,
-    Skolem-free value per derivation), so it needs more given clauses, never fewer, and
-    where no definite answer exists it runs until its effort is spent. Hence the
-    conjecture goes first, its variables existential, on the whole ``effort``: it
-    settles the status (``CounterSatisfiable`` or ``GaveUp`` also mean no answer will be
-    found). After a proof in ``u`` given clauses the answer search gets
-    :data:`ANSWER_SEARCH_FACTOR` times ``u`` (at most ``effort``): the cost of a theorem
-    without a definite answer stays a multiple of its proof's, not the whole effort
-    again. The planner never runs the conjecture attempt and never binds a parameter
-    from it.
+    instance. The conjecture goes first, a question's variables existential, on the
+    whole ``effort``: that settles the status (``CounterSatisfiable`` or ``GaveUp`` also
+    mean no answer will be found), and ``settled`` is told it before the answer is looked
+    for (``strips prove`` reports it if the time runs out then). The answer search is
+    then a second run:
+
+    - a prover that declares ``answer-literals`` (:data:`ANSWER_LITERALS`) gets the
+      question as E does: its variables stay variables, recorded in an answer literal,
+      and the first refutation gives the answer, be it definite (``[[a]|_]``), a term
+      with variables, a Skolem term (``[[esk1_0]|_]``) or a disjunction
+      (``[([a]|[b])|_]``). A theorem always has one, so this run gets the whole
+      ``effort`` again. (It comes second since answer literals slow a proof: clauses
+      that differ only in their answers are not merged, and a clause with an answer
+      literal cuts nothing as a unit: SYN074+1.q takes 482 given clauses with them
+      against 57 without.)
+    - any other prover is asked with the variables as parameters, which binds definite
+      answers only (paper, III.A: the planner's way). Where none exists that search
+      would spend its whole effort, so after a proof in ``u`` given clauses it gets
+      :data:`ANSWER_SEARCH_FACTOR` times ``u`` (at most ``effort``).
+
+    The planner binds parameters from definite answers only, never from answer literals.
     """
     if not problem.question_variables:
         result = prover.prove(problem.task(effort))
-        return szs_status(problem, result), szs_answers(problem, result)
+        status, answers = szs_status(problem, result), szs_answers(problem, result)
+        return TptpOutcome(status, answers, (("problem", result),))
     plain = prover.prove(problem.task(effort, answers=False))
     if plain.status != PROVED:
-        return ("CounterSatisfiable" if plain.status == SATURATED else GAVE_UP), None
-    budget = min(effort, ANSWER_SEARCH_FACTOR * max(1, plain.effort_used))
-    result = prover.prove(problem.task(budget))
-    return "Theorem", szs_answers(problem, result) if result.proved else None
+        return TptpOutcome(_unproved(plain), None, (("conjecture", plain),))
+    if settled is not None:
+        settled(TptpOutcome("Theorem", None, (("conjecture", plain),)))
+    if ANSWER_LITERALS in (declared(type(prover), "prover") or ()):
+        result = prover.prove(problem.task(effort, answer_literals=True))
+        answers = answer_tuples(result.proof[-1]) if result.proved and result.proof else None
+    else:
+        budget = min(effort, ANSWER_SEARCH_FACTOR * max(1, plain.effort_used))
+        result = prover.prove(problem.task(budget))
+        answers = szs_answers(problem, result) if result.proved else None
+    return TptpOutcome("Theorem", answers, (("conjecture", plain), ("answer search", result)))
 
 
-def _tptp_term(term: Term) -> str:
+def _unproved(result: ProofResult) -> str:
+    """The SZS status of a question not proved: saturated, its conjecture is false."""
+    return "CounterSatisfiable" if result.status == SATURATED else GAVE_UP
+
+
+def tptp_term(term: Term) -> str:
+    """A term in TPTP syntax: clause variables as ``X0``, ``X1``..., Skolem symbols
+    ``sk!3`` as E names its own, ``esk3_0`` (the number, then the arity)."""
+    if type(term) is int:
+        return f"X{term}"
     if type(term) is tuple:
-        return f"{term[0]}({','.join(_tptp_term(a) for a in term[1:])})"
-    return str(term)
+        functor = _tptp_symbol(term[0], len(term) - 1)
+        return f"{functor}({','.join(tptp_term(a) for a in term[1:])})"
+    return _tptp_symbol(str(term), 0)
+
+
+def _tptp_symbol(symbol: str, arity: int) -> str:
+    if symbol.startswith(SKOLEM_PREFIX):
+        return f"esk{symbol[len(SKOLEM_PREFIX):]}_{arity}"
+    return symbol
+
+
+def answer_tuples(clause: Clause) -> str | None:
+    """The SZS answer of a refutation ending in answer literals: ``[[a, b]|_]`` for one,
+    ``[([a]|[b])|_]`` for a disjunction (E's notation); ``None`` for the empty clause."""
+    tuples = [
+        f"[{', '.join(tptp_term(arg) for arg in atom[1:])}]"
+        for positive, atom in clause.literals
+        if positive and atom[0] == ANSWER
+    ]
+    if not tuples:
+        return None
+    if len(tuples) == 1:
+        return f"[{tuples[0]}|_]"
+    return f"[({'|'.join(tuples)})|_]"
 
 
 def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
@@ -514,9 +649,72 @@ def szs_answers(problem: TptpProblem, result: ProofResult) -> str | None:
     tuples = []
     for answer in result.answers:
         bound = dict(answer)
-        values = [_tptp_term(bound[p]) if p in bound else "_" for p in params]
+        values = [tptp_term(bound[p]) if p in bound else "_" for p in params]
         tuples.append(f"[{', '.join(values)}]")
     return f"[{', '.join(tuples)}|_]"
+
+
+def parse_answers(text: str) -> list[tuple[Term | Var, ...]]:
+    """The tuples of an SZS answer, ``[[a, f(X1)]|_]`` or ``[([a]|[b])|_]`` (E's
+    notation, and ours): one tuple for a definite answer, several for a disjunction.
+    Variables are :class:`Var`; symbols are as written (``esk1_0`` stays a name)."""
+    text = text.strip()
+    if not text.endswith("|_]"):
+        raise InputError("<answer>", 1, len(text), "expected an answer ending in '|_]'")
+    parser = _Parser(text[:-3], "<answer>")
+    parser.expect("[")
+    disjunctive = parser.at("(")
+    if disjunctive:
+        parser.next()
+    tuples = [_answer_tuple(parser)]
+    while disjunctive and parser.at("|"):
+        parser.next()
+        tuples.append(_answer_tuple(parser))
+    if disjunctive:
+        parser.expect(")")
+    if parser.peek().kind != "end":
+        raise parser.error("'|_]'")
+    return tuples
+
+
+def _answer_tuple(parser: _Parser) -> tuple[Term | Var, ...]:
+    return tuple(parser.bracketed(parser.term))
+
+
+def formula_to_tptp(formula: Formula) -> str:
+    """``formula`` in TPTP's ``fof`` syntax (fully parenthesized), for handing a problem
+    built from a parsed one to another prover (checking an answer with E)."""
+    if isinstance(formula, Truth):
+        return "$true" if formula.value else "$false"
+    if isinstance(formula, Atomic):
+        atom = formula.atom
+        if atom[0] == EQUALITY and len(atom) == 3:
+            return f"({_fof_term(atom[1])} = {_fof_term(atom[2])})"
+        return _fof_term(atom if len(atom) > 1 else atom[0])
+    if isinstance(formula, Not):
+        return f"~ {formula_to_tptp(formula.body)}"
+    if isinstance(formula, (And, Or)):
+        if not formula.parts:
+            return "$true" if isinstance(formula, And) else "$false"
+        op = " & " if isinstance(formula, And) else " | "
+        return "(" + op.join(formula_to_tptp(part) for part in formula.parts) + ")"
+    if isinstance(formula, Implies):
+        return f"({formula_to_tptp(formula.premise)} => {formula_to_tptp(formula.conclusion)})"
+    if isinstance(formula, Iff):
+        return f"({formula_to_tptp(formula.left)} <=> {formula_to_tptp(formula.right)})"
+    if isinstance(formula, (Forall, Exists)):
+        quantifier = "!" if isinstance(formula, Forall) else "?"
+        names = ", ".join(v.name for v in formula.variables)
+        return f"({quantifier} [{names}] : {formula_to_tptp(formula.body)})"
+    raise TypeError(f"not a formula: {formula!r}")
+
+
+def _fof_term(term: Term | Var) -> str:
+    if isinstance(term, Var):
+        return term.name
+    if type(term) is tuple:
+        return f"{term[0]}({','.join(_fof_term(arg) for arg in term[1:])})"
+    return str(term)
 
 
 def szs_report(problem: TptpProblem, result: ProofResult) -> str:

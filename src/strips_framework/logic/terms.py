@@ -24,6 +24,14 @@ SKOLEM_PREFIX = "sk!"
 
 EQUALITY = "="
 
+#: The answer predicate of a TPTP question (Green's answer literals, as E's): the negated
+#: question ``~F(X, Y)`` becomes ``~F(X, Y) | $answer(X, Y)``, and a clause of ``$answer``
+#: literals alone is a refutation whose arguments are the answer, be they terms with
+#: variables, Skolem terms or (several literals) a disjunction. No user can write it (the
+#: TPTP reader refuses ``$`` symbols); a prover declaring ``answer-literals`` never
+#: resolves on it. The planner binds parameters instead (paper, III.A).
+ANSWER = "$answer"
+
 #: In a delete-list atom, ``$`` matches any term: ``FACING($)`` deletes every FACING atom.
 #: (A world-model notion, defined here because the formula parser reads it.)
 WILDCARD = "$"

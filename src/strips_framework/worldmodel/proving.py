@@ -132,7 +132,9 @@ class ProofResult:
     ``answers`` holds one parameter binding per refutation found (empty unless proved);
     ``uncompleted`` holds the negated goal and its retained descendants when no proof was
     found (empty when proved); ``proof`` lists the clauses of the first refutation, premises
-    first, when the prover keeps them.
+    first, when the prover keeps them. ``phases`` says what a prover that schedules
+    several calculi ran, as ``(calculus, status, effort used)``, for reports such as
+    ``strips prove --json`` (empty for a prover with one calculus).
     """
 
     status: str
@@ -140,6 +142,7 @@ class ProofResult:
     uncompleted: tuple[Clause, ...] = ()
     effort_used: int = 0
     proof: tuple[Clause, ...] = ()
+    phases: tuple[tuple[str, str, int], ...] = ()
 
     @property
     def proved(self) -> bool:

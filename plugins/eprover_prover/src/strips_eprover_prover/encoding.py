@@ -14,7 +14,7 @@ with each clause ``Ci`` universally closed, so E's answer tuples bind the parame
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Param, Term
@@ -40,6 +40,13 @@ class SymbolTable:
             self._names[key] = found
             self._back[found] = name
         return found
+
+    def for_attempt(self) -> SymbolTable:
+        """A table for one attempt of a session: the symbols so far (shared, so a symbol
+        keeps its name for the session), its own parameters and constants."""
+        table = SymbolTable(self.unique_names)
+        table._names, table._back = self._names, self._back
+        return table
 
     def param(self, param: Param) -> str:
         found = self.params.get(param)
@@ -79,7 +86,7 @@ def _literal(literal: Literal, table: SymbolTable) -> str:
     return text if positive else f"~{text}"
 
 
-def _disjunction(clause: Clause, table: SymbolTable) -> str:
+def disjunction(clause: Clause, table: SymbolTable) -> str:
     literals = [_literal(literal, table) for literal in _bound(clause)]
     return " | ".join(literals) if literals else "$false"
 
@@ -97,22 +104,33 @@ def _variables(text: str) -> list[str]:
     return list(dict.fromkeys(re.findall(r"\bX\d+\b", text)))
 
 
-def _closed(disjunction: str) -> str:
-    variables = _variables(disjunction)
-    return f"![{','.join(variables)}]: ({disjunction})" if variables else f"({disjunction})"
+def _closed(text: str) -> str:
+    variables = _variables(text)
+    return f"![{','.join(variables)}]: ({text})" if variables else f"({text})"
 
 
 def to_tptp(task: ProofTask) -> tuple[str, SymbolTable]:
     """The task as a TPTP problem, with the table that reads E's answers back."""
     table = SymbolTable(task.unique_names)
     lines = [
-        f"cnf(a{number}, axiom, {_disjunction(clause, table)})."
+        f"cnf(a{number}, axiom, {disjunction(clause, table)})."
         for number, clause in enumerate(task.axioms)
     ]
     if table.params:
         raise ValueError("an axiom has parameters: only the goal may have them")
-    goals = [_disjunction(clause, table) for clause in task.negated_goal]
-    if task.unique_names and table.equality:
+    goals = goal_lines(task.negated_goal, table, before=True)
+    return "\n".join([*lines, *goals]) + "\n", table
+
+
+def goal_lines(
+    negated_goal: Sequence[Clause], table: SymbolTable, before: bool = False
+) -> list[str]:
+    """The negated goal's lines: its clauses, or with parameters a ``question`` over
+    them; with ``before``, the unique-names axioms over the constants the table has
+    seen when the task has equality (a session's attempts without equality need none)."""
+    goals = [disjunction(clause, table) for clause in negated_goal]
+    lines: list[str] = []
+    if before and table.unique_names and table.equality:
         names = list(table.constants)
         lines.extend(
             f"cnf(u{i}_{j}, axiom, {names[i]} != {names[j]})."
@@ -120,14 +138,18 @@ def to_tptp(task: ProofTask) -> tuple[str, SymbolTable]:
             for j in range(i + 1, len(names))
         )
     if not goals:
-        return "\n".join(lines) + "\n", table
+        return lines
     if table.params:
         body = " & ".join(_closed(goal) for goal in goals)
         params = ",".join(table.params.values())
         lines.append(f"fof(goal, question, ?[{params}]: ~({body})).")
     else:
         lines.extend(f"cnf(g{number}, negated_conjecture, {goal})." for number, goal in enumerate(goals))
-    return "\n".join(lines) + "\n", table
+    return lines
+
+
+def mentions_equality(clauses: Iterable[Clause]) -> bool:
+    return any(atom[0] == EQUALITY for clause in clauses for _, atom in clause.literals)
 
 
 _TOKEN = re.compile(r'\s*("[^"]*"|[A-Za-z_][A-Za-z0-9_]*|[(),\[\]|])')
@@ -173,7 +195,8 @@ def _parse_term(tokens: list[str], pos: int, table: SymbolTable) -> tuple[Term |
 
 
 def parse_answers(lines: Iterable[str], table: SymbolTable) -> list[Answer]:
-    """The bindings of E's ``# SZS answers Tuple [[t1, t2]|_]`` lines, in E's order;
+    """The bindings of E's ``# SZS answers Tuple [[t1, t2]|_]`` lines (``%`` since E 3),
+    in E's order;
     tuples with E's own Skolem symbols or variables inside terms are left out (a parameter
     is never bound to those, paper III.A), a variable alone leaves its parameter open, and
     one that stands for two parameters (``[X, X]``: they must be equal) leaves the tuple
@@ -183,9 +206,9 @@ def parse_answers(lines: Iterable[str], table: SymbolTable) -> list[Answer]:
     params = list(table.params)
     answers: list[Answer] = []
     for line in lines:
-        if not line.startswith("# SZS answers Tuple"):
+        if not line[1:].startswith(" SZS answers Tuple") or line[:1] not in "#%":
             continue
-        text = line.removeprefix("# SZS answers Tuple").split(" for ")[0]
+        text = line[len("# SZS answers Tuple") :].split(" for ")[0]
         if text.lstrip().startswith("[("):
             continue
         tokens = _tokens(text)

@@ -12,6 +12,8 @@ rules turn it into what would establish it.
 from __future__ import annotations
 
 import heapq
+from collections.abc import Set as AbstractSet
+from itertools import chain
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param, Term
@@ -83,34 +85,74 @@ def _match_all(pattern: list[Literal], target: list[Literal], subst: dict) -> bo
     return False
 
 
-def residue(task: ProofTask) -> tuple[Clause, ...]:
-    """The uncompleted proof of ``task`` (see the module docstring), in the order made."""
-    found = list(dict.fromkeys(task.negated_goal))
-    known = set(found)
-    by_key: dict[tuple[bool, str], list[tuple[Clause, int]]] = {}
-    for axiom in task.axioms:
-        for j, (sign, atom) in enumerate(axiom.literals):
-            by_key.setdefault((sign, atom[0]), []).append((axiom, j))
-    waiting = [(len(c.literals), n, c) for n, c in enumerate(found)]
-    heapq.heapify(waiting)
-    while waiting and len(found) < LIMIT:
-        clause = heapq.heappop(waiting)[2]
-        for i, (sign, atom) in enumerate(clause.literals):
-            for partner, j in by_key.get((not sign, atom[0]), ()):
-                if len(found) >= LIMIT:
-                    break
-                made = _resolvent(clause, i, partner, j)
-                if made is not None and made not in known:
-                    known.add(made)
-                    found.append(made)
-                    heapq.heappush(waiting, (len(made.literals), len(found), made))
+class Residue:
+    """The model's clauses indexed for :meth:`of`, by the sign and predicate of each of
+    their literals. A session builds it once on M0 (:class:`~.prover.EProverSession`),
+    so an attempt walks only the partners of its own clauses, not the model."""
+
+    def __init__(self, axioms: tuple[Clause, ...]) -> None:
+        #: (sign, predicate) -> (the axiom's index, the axiom, the literal's position)
+        self.by_key: dict[tuple[bool, str], list[tuple[int, Clause, int]]] = {}
+        self._add(axioms, 0, self.by_key)
+
+    @staticmethod
+    def _add(
+        axioms: tuple[Clause, ...],
+        first: int,
+        by_key: dict[tuple[bool, str], list[tuple[int, Clause, int]]],
+    ) -> None:
+        for number, axiom in enumerate(axioms, first):
+            for j, (sign, atom) in enumerate(axiom.literals):
+                by_key.setdefault((sign, atom[0]), []).append((number, axiom, j))
+
+    def of(
+        self,
+        negated_goal: tuple[Clause, ...],
+        hidden: AbstractSet[int] = frozenset(),
+        added: tuple[Clause, ...] = (),
+    ) -> tuple[Clause, ...]:
+        """The uncompleted proof of ``negated_goal`` over the indexed axioms less those
+        numbered in ``hidden``, plus ``added`` after them (see the module docstring), in
+        the order made: exactly what :func:`residue` gives the task of those axioms."""
+        extra: dict[tuple[bool, str], list[tuple[int, Clause, int]]] = {}
+        self._add(added, -len(added) - 1, extra)  # numbers no M0 clause has
+        found = list(dict.fromkeys(negated_goal))
+        known = set(found)
+        waiting = [(len(c.literals), n, c) for n, c in enumerate(found)]
+        heapq.heapify(waiting)
+        while waiting and len(found) < LIMIT:
+            clause = heapq.heappop(waiting)[2]
+            for i, (sign, atom) in enumerate(clause.literals):
+                key = (not sign, atom[0])
+                for number, partner, j in chain(self.by_key.get(key, ()), extra.get(key, ())):
+                    if len(found) >= LIMIT:
+                        break
+                    if number in hidden:
+                        continue
+                    made = _resolvent(clause, i, partner, j)
+                    if made is not None and made not in known:
+                        known.add(made)
+                        found.append(made)
+                        heapq.heappush(waiting, (len(made.literals), len(found), made))
+        return _unsubsumed(found)
+
+
+def _unsubsumed(found: list[Clause]) -> tuple[Clause, ...]:
+    """``found`` less each clause another subsumes; of two that subsume each other, the
+    first stays. A clause subsumes another only if each (sign, predicate) of its literals
+    is among the other's, which is checked first (most pairs fail there)."""
+    keys = [frozenset((sign, atom[0]) for sign, atom in c.literals) for c in found]
     kept: list[Clause] = []
     for n, c in enumerate(found):
-        # A clause goes if another subsumes it; of two that subsume each other, the first stays.
         if not any(
-            _subsumes(d, c) and (m < n or not _subsumes(c, d))
+            keys[m] <= keys[n] and _subsumes(d, c) and (m < n or not _subsumes(c, d))
             for m, d in enumerate(found)
             if m != n
         ):
             kept.append(c)
     return tuple(kept)
+
+
+def residue(task: ProofTask) -> tuple[Clause, ...]:
+    """The uncompleted proof of ``task`` (see the module docstring), in the order made."""
+    return Residue(task.axioms).of(task.negated_goal)

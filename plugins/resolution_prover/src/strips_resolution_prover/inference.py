@@ -11,10 +11,12 @@ descendants" (paper, III.A).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
+from functools import lru_cache
 from collections.abc import Set as AbstractSet
 
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import (
+    ANSWER,
     EQUALITY,
     Param,
     Term,
@@ -24,7 +26,7 @@ from strips_framework.logic.terms import (
     variables_of,
 )
 from strips_framework.logic.unify import Substitution, substitute, unify
-from strips_resolution_prover.kbo import greater
+from strips_resolution_prover.kbo import literal_greater
 from strips_resolution_prover.pclause import Bindings, PClause, binding_key, term_weight
 
 #: Offset added to the given clause's variables; processed clauses number theirs from 0, and
@@ -164,24 +166,28 @@ def eligible(
             return (best,)
         if ordered:
             return _maximal(literals)
-    return tuple(range(len(literals)))
+    return tuple(i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER)
 
 
+@lru_cache(maxsize=1 << 16)
 def _maximal(literals: tuple[Literal, ...]) -> tuple[int, ...]:
-    """The positions of the literals no other literal of the clause is above in KBO (on
-    atoms, predicates as head symbols). KBO on terms with variables holds under every
-    substitution, so a literal left out is below another in every instance too: it could
-    never be the maximal literal an ordered inference needs. Clauses with equations keep
-    all their literals: superposition compares equations as multisets of their sides."""
-    if len(literals) < 2:
-        return tuple(range(len(literals)))
-    atoms = [atom for _, atom in literals]
-    if any(atom[0] == EQUALITY for atom in atoms):
-        return tuple(range(len(literals)))
+    """The positions of the literals no other literal of the clause is above in the
+    literal ordering (:func:`~.kbo.literal_greater`: KBO's multiset extension, equations
+    as the multisets of their sides, an atom ``A`` as ``A = TOP``). It holds under every
+    substitution, so a literal left out is below another in every instance too: it
+    could never be the maximal literal an ordered inference (resolution, superposition,
+    paramodulation into a clause) needs. Answer literals
+    (:data:`~strips_framework.logic.terms.ANSWER`) are below every other literal and
+    never resolved upon, so they neither count nor are kept. Cached: a retained clause
+    is a paramodulation partner of every later given clause, and the comparisons (KBO
+    on multisets) cost more than hashing its literals."""
+    positions = [i for i, (_, atom) in enumerate(literals) if atom[0] != ANSWER]
+    if len(positions) < 2:
+        return tuple(positions)
     return tuple(
         i
-        for i, atom in enumerate(atoms)
-        if not any(j != i and greater(other, atom) for j, other in enumerate(atoms))
+        for i in positions
+        if not any(j != i and literal_greater(literals[j], literals[i]) for j in positions)
     )
 
 
@@ -373,6 +379,8 @@ def factors(given: PClause, limits: Limits, selecting: bool = False) -> Iterator
             other_positive, other = literals[j]
             if other_positive is not positive or other[0] != atom[0] or len(other) != len(atom):
                 continue
+            if atom[0] == ANSWER:
+                continue  # a disjunctive answer is kept as it is (as E does)
             subst: Substitution = dict(given.bindings)
             if unify(atom, other, subst) is None:
                 continue

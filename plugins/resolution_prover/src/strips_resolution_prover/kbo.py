@@ -50,3 +50,37 @@ def greater(s: Term, t: Term) -> bool:
         if a != b:
             return greater(a, b)
     return False
+
+
+#: The least term: the other side of a non-equational atom read as ``A = TOP``.
+TOP = ""
+
+
+def _multiset(literal: tuple[bool, tuple]) -> list[Term]:
+    """A literal as the multiset of terms the literal ordering compares: ``s = t`` as
+    ``{s, t}``, ``s != t`` as ``{s, s, t, t}``, an atom ``A`` as ``A = TOP`` (so the
+    negative literal of an atom is above the positive one)."""
+    positive, atom = literal
+    sides = [atom[1], atom[2]] if atom[0] == "=" and len(atom) == 3 else [atom, TOP]
+    return sides if positive else sides * 2
+
+
+def literal_greater(first: tuple[bool, tuple], second: tuple[bool, tuple]) -> bool:
+    """Whether ``first`` is above ``second`` in the literal ordering: the multiset
+    extension of KBO on :func:`_multiset` (every term ``second`` has more of is below
+    one that ``first`` has more of). Like KBO it holds under every substitution, so a
+    literal below another is below it in every instance."""
+    left, right = _multiset(first), _multiset(second)
+    for term in list(left):
+        if term in right:
+            right.remove(term)
+            left.remove(term)
+    if not left:
+        return False
+    return all(any(_above(m, n) for m in left) for n in right)
+
+
+def _above(m: Term, n: Term) -> bool:
+    if n == TOP:
+        return m != TOP
+    return m != TOP and greater(m, n)

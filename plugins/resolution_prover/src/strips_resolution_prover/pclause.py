@@ -20,6 +20,7 @@ from functools import lru_cache
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import Param, Term
 from strips_framework.logic.unify import substitute
+from strips_resolution_prover.feature_index import feature_vector
 
 Bindings = tuple[tuple[Param, Term], ...]
 
@@ -39,10 +40,10 @@ class PClause:
 
     __slots__ = (
         "_features",
+        "_vector",
         "bindings",
         "dead",
         "id",
-        "keyset",
         "label",
         "literals",
         "nvars",
@@ -68,8 +69,8 @@ class PClause:
         self.nvars = nvars
         self.bindings = bindings
         self.weight = sum(term_weight(atom) for _, atom in literals) if weight is None else weight
-        self.keyset = frozenset((pos, atom[0], len(atom)) for pos, atom in literals)
         self._features: frozenset[object] | None = None
+        self._vector: tuple[int, ...] | None = None
         self.sos = sos
         self.parents = parents
         self.label = label
@@ -83,6 +84,14 @@ class PClause:
             self._features = features_of(self.literals)
         return self._features
 
+    @property
+    def vector(self) -> tuple[int, ...]:
+        """The feature vector the subsumption index files it by (:mod:`.feature_index`),
+        computed on first use."""
+        if self._vector is None:
+            self._vector = feature_vector(self.literals, len(self.bindings))
+        return self._vector
+
     def fresh_copy(self, *, sos: bool) -> PClause:
         """A new, unregistered clause with this one's literals and derived data."""
         copy = PClause.__new__(PClause)
@@ -91,8 +100,8 @@ class PClause:
         copy.nvars = self.nvars
         copy.bindings = self.bindings
         copy.weight = self.weight
-        copy.keyset = self.keyset
         copy._features = self._features
+        copy._vector = self._vector
         copy.sos = sos
         copy.parents = ()
         copy.label = self.label

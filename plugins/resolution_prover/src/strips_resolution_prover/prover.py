@@ -26,6 +26,7 @@ from typing import ClassVar
 from attrs import evolve
 
 from strips_framework.capabilities import (
+    ANSWER_LITERALS,
     ANSWERS,
     EFFORT_BOUND,
     EQUALITY,
@@ -34,6 +35,7 @@ from strips_framework.capabilities import (
     UNCOMPLETED_PROOF,
 )
 from strips_framework.logic.clauses import Clause, Literal
+from strips_framework.logic.terms import ANSWER
 from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
@@ -118,7 +120,15 @@ class ResolutionProver(Configurable):
     #: With the default options; size limits (``max_clause_literals`` and the like) give
     #: up on what they discard, which keeps the prover sound but not complete.
     capabilities: ClassVar[frozenset[str]] = frozenset(
-        {EQUALITY, QUANTIFIED_AXIOMS, ANSWERS, UNCOMPLETED_PROOF, SOUND, EFFORT_BOUND}
+        {
+            EQUALITY,
+            QUANTIFIED_AXIOMS,
+            ANSWERS,
+            ANSWER_LITERALS,
+            UNCOMPLETED_PROOF,
+            SOUND,
+            EFFORT_BOUND,
+        }
     )
 
     options = (
@@ -155,6 +165,13 @@ class ResolutionProver(Configurable):
     def open(self, initial: InitialModel, unique_names: bool) -> ResolutionSession:
         """A session on M0, which is imported and indexed here, once."""
         return ResolutionSession(self, initial, unique_names)
+
+
+def refutes(literals: tuple[Literal, ...]) -> bool:
+    """Whether a clause with these literals is a refutation: the empty clause, or only
+    answer literals (:data:`~strips_framework.logic.terms.ANSWER`), whose arguments are
+    then the answer (the clause is the last of the proof)."""
+    return all(positive and atom[0] == ANSWER for positive, atom in literals)
 
 
 def _positives(clause: Clause) -> int:
@@ -388,10 +405,10 @@ def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResul
     sos = prover._replace(schedule=False, set_of_support=True)
     saturate = prover._replace(schedule=False, set_of_support=False)
     chosen = plan(task.axioms, task.negated_goal)
-    if chosen == "set-of-support":
-        return sos.prove(task)
-    if chosen == "saturation" or task.effort < 3:
-        return saturate.prove(task)
+    if chosen == "set-of-support" or chosen == "saturation" or task.effort < 3:
+        calculus = sos if chosen == "set-of-support" else saturate
+        result = calculus.prove(task)
+        return evolve(result, phases=((chosen, result.status, result.effort_used),))
     relevant = relevant_axioms(task.axioms, task.negated_goal)
     pruned = evolve(task, axioms=relevant) if len(relevant) < len(task.axioms) else None
     return interleave(task, saturate, sos, pruned)
@@ -421,10 +438,12 @@ def interleave(
     effort = task.effort
     asks = any(has_parameter(atom) for c in task.negated_goal for _, atom in c.literals)
     attempts = [_attempt(saturate, task), _attempt(sos, task)]
+    names = ["saturation", "set-of-support"]
     claims = [True, not asks]
     rest = effort
     if pruned is not None:
         attempts.append(_attempt(saturate, pruned))
+        names.append("saturation of the SInE-relevant axioms")
         claims.append(False)
         rest = effort - max(1, int(effort * PRUNED_SHARE))
     share = max(1, min(rest - 1, int(rest * SATURATION_SHARE)))
@@ -440,13 +459,27 @@ def interleave(
                 continue
             result = attempt.result()
             if result.status == PROVED or (result.status == SATURATED and claims[i]):
-                return evolve(result, effort_used=sum(a.effort for a in attempts))
+                return _schedule_result(result, attempts, names, i)
             live.remove(i)
             _hand_on(bounds[i] - attempt.effort, live, bounds)
             bounds[i] = attempt.effort
         if not live:
             break
-    return evolve(attempts[1].result(), effort_used=sum(a.effort for a in attempts))
+    return _schedule_result(attempts[1].result(), attempts, names, None)
+
+
+def _schedule_result(
+    result: ProofResult, attempts: Sequence[_Saturation], names: Sequence[str], decided: int | None
+) -> ProofResult:
+    """The deciding attempt's result (or the set of support's), with the effort of all
+    and each one's phase: the decider's status (the set of support's when none decided),
+    ``GaveUp`` for the others."""
+    shown = 1 if decided is None else decided
+    phases = tuple(
+        (name, result.status if i == shown else GAVE_UP, attempt.effort)
+        for i, (name, attempt) in enumerate(zip(names, attempts))
+    )
+    return evolve(result, effort_used=sum(a.effort for a in attempts), phases=phases)
 
 
 def _hand_on(unused: int, live: Sequence[int], bounds: list[int]) -> None:
@@ -653,7 +686,7 @@ class _Saturation:
         )
         partners = [c for c in chain(*lists) if c.id not in self.hidden]
         for clause in paramodulants(
-            given, renamed, partners, self.limits, saturating=self.selecting
+            given, renamed, partners, self.limits, saturating=self.selecting, ordered=self.ordered
         ):
             self._add_new(clause)
             if self._done():
@@ -837,7 +870,7 @@ class _Saturation:
         if simplified is None:
             return
         simplified = self._cut_by_units(simplified, simplified.parents)
-        if not simplified.literals:
+        if refutes(simplified.literals):
             if simplified.bindings not in self.answers and not self._done():
                 self.own.register(simplified)
                 self._record_refutation(simplified)

@@ -18,6 +18,7 @@ from collections.abc import Set as AbstractSet
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import Term
 from strips_resolution_prover.discrimination import DiscriminationTree
+from strips_resolution_prover.feature_index import FeatureVectorIndex
 from strips_resolution_prover.pclause import PClause
 
 
@@ -183,22 +184,23 @@ class SubsumptionIndex:
     - Other units are filed in a discrimination tree per sign
       (:mod:`~strips_resolution_prover.discrimination`), which finds the few whose
       symbols fit a literal.
-    - Longer clauses are filed under the key of their first literal and their first
-      parameter binding (``None`` if they made none): a subsumer's keys and bindings are
-      subsets of the subsumed clause's, so forward subsumption of ``d`` only looks at the
-      clauses filed under one of ``d``'s keys and one of its bindings, each candidate once.
-      When a planner asks for all answers, the set of support holds many clauses that
-      differ only in their bindings; this keeps them from being candidates for each other.
-    - Backward subsumption of ``c`` looks at the *deletable* clauses containing ``c``'s
-      rarest key or binding; with a set of support, usable clauses are never deleted, so
-      they are not filed there at all.
+    - Longer clauses are filed by their first parameter binding (``None`` if they made
+      none) in a feature-vector index each (:mod:`~.feature_index`): a subsumer's
+      bindings are among the subsumed clause's, and its feature counts no larger, so
+      forward subsumption of ``d`` walks, under ``None`` and each of ``d``'s bindings,
+      only the branches of the tries with counts at most ``d``'s. When a planner asks
+      for all answers, the set of support holds many clauses that differ only in their
+      bindings; the first level keeps them from being candidates for each other.
+    - Backward subsumption of ``c`` walks the *deletable* clauses' feature-vector index
+      for counts at least ``c``'s; with a set of support, usable clauses are never
+      deleted, so they are not filed there at all.
     """
 
     def __init__(self) -> None:
         self._ground_units: dict[Literal, list[PClause]] = {}
         self._units = {sign: DiscriminationTree[PClause]() for sign in (True, False)}
-        self._by_first_key: dict[tuple[object, ...], list[PClause]] = {}
-        self._by_key: dict[object, list[PClause]] = {}
+        self._forward: dict[object, FeatureVectorIndex[PClause]] = {}
+        self._backward = FeatureVectorIndex[PClause]()
         self._dead = 0
 
     def add(self, clause: PClause, *, deletable: bool) -> None:
@@ -212,11 +214,9 @@ class SubsumptionIndex:
                 self._units[positive].add(atom, clause)
         else:
             binding = clause.bindings[0] if clause.bindings else None
-            first_key = (positive, atom[0], len(atom), binding)
-            self._by_first_key.setdefault(first_key, []).append(clause)
+            self._forward.setdefault(binding, FeatureVectorIndex()).add(clause.vector, clause)
         if deletable:
-            for key in (*clause.keyset, *clause.bindings):
-                self._by_key.setdefault(key, []).append(clause)
+            self._backward.add(clause.vector, clause)
 
     def is_subsumed_by_unit(self, d: PClause, hidden: AbstractSet[int] = frozenset()) -> bool:
         """Whether a unit clause matches a literal of ``d``. Clauses whose ids are in
@@ -262,24 +262,24 @@ class SubsumptionIndex:
     ) -> bool:
         if self.is_subsumed_by_unit(d, hidden):
             return True
-        if len(d.literals) < 2:
+        if len(d.literals) < 2 or not self._forward:
             return False
-        bindings = (None, *d.bindings)
-        for key in d.keyset:
-            for binding in bindings:
-                for c in self._by_first_key.get((*key, binding), ()):
-                    if not c.dead and c.id not in hidden and subsumes(c, d, work):
-                        return True
+        vector = d.vector
+        for binding in (None, *d.bindings):
+            index = self._forward.get(binding)
+            if index is None:
+                continue
+            for c in index.at_most(vector):
+                if not c.dead and c.id not in hidden and subsumes(c, d, work):
+                    return True
         return False
 
     def subsumed_by(self, c: PClause, work: MatchWork) -> Iterator[PClause]:
-        """Live deletable clauses other than ``c`` that ``c`` subsumes, in the order they
-        were added."""
-        if not c.literals:
+        """Live deletable clauses other than ``c`` that ``c`` subsumes."""
+        if not c.literals or not self._backward:
             return
-        lists = [self._by_key.get(key, []) for key in (*c.keyset, *c.bindings)]
-        candidates = min(lists, key=len)
-        for d in candidates:
+        vector = c.vector
+        for d in list(self._backward.at_least(vector)):
             if d is not c and not d.dead and subsumes(c, d, work):
                 yield d
 
@@ -288,8 +288,9 @@ class SubsumptionIndex:
         self._dead += 1
         if self._dead > 256:
             self._dead = 0
-            for table in (self._ground_units, self._by_first_key, self._by_key):
-                for key, clauses in table.items():
-                    table[key] = [c for c in clauses if not c.dead]
+            for key, clauses in self._ground_units.items():
+                self._ground_units[key] = [c for c in clauses if not c.dead]
+            for index in (*self._forward.values(), self._backward):
+                index.prune(lambda c: not c.dead)
             for units in self._units.values():
                 units.prune(lambda c: not c.dead)

@@ -75,11 +75,19 @@ class ModelTruth:
         entries = self.model[symbol].as_list()
         self._values.append(entries)
         default = entries[-1]
-        if z3.is_false(default) and all(_is_value(x) for entry in entries[:-1] for x in entry):
-            return frozenset(
-                tuple(arg.get_id() for arg in entry[:-1])
+        if (z3.is_false(default) or z3.is_true(default)) and all(
+            _is_value(x) for entry in entries[:-1] for x in entry
+        ):
+            # A finite table with a default: read it, never evaluate the predicate (a
+            # model often makes a predicate true everywhere: ``else -> True``).
+            listed = {
+                tuple(arg.get_id() for arg in entry[:-1]): z3.is_true(entry[-1])
                 for entry in entries[:-1]
-                if z3.is_true(entry[-1])
+            }
+            if z3.is_false(default):
+                return frozenset(row for row, true in listed.items() if true)
+            return frozenset(
+                row for row in product(self.elements, repeat=arity) if listed.get(row, True)
             )
         return frozenset(
             row
