@@ -27,6 +27,8 @@ EQUALITY = "equality"
 QUANTIFIED_AXIOMS = "quantified-axioms"
 ANSWERS = "answers"
 UNCOMPLETED_PROOF = "uncompleted-proof"
+DEFINITE_HORN = "definite-horn"
+ALL_ANSWERS = "all-answers"
 SOUND = "sound"
 COMPLETE = "complete"
 EFFORT_BOUND = "effort-bound"
@@ -52,6 +54,12 @@ VOCABULARY: dict[str, dict[str, str]] = {
         "only for goals that do not follow",
         COMPLETE: "with enough effort every goal that follows is proved, and every binding "
         "among the answers is found when max_answers allows",
+        DEFINITE_HORN: "answers every task whose axioms are definite Horn clauses (ground "
+        "facts, rules with one positive literal, no equations) and whose negated goal is "
+        "one clause of negated atoms (and, under unique names, the goal's inequalities); "
+        "refuses other tasks with ValueError",
+        ALL_ANSWERS: "finds every answer in one pass, however large max_answers is, at a "
+        "cost that does not grow with the effort (what the lifted search asks for)",
         EFFORT_BOUND: "task.effort bounds the work deterministically: the same task gives "
         "the same result, and effort_used never exceeds effort",
     },

@@ -20,7 +20,7 @@ from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
 from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
-from strips_framework.plugin.config import Config
+from strips_framework.plugin.config import Choice, Config
 from strips_framework.plugin.registry import Registry
 from strips_framework.records import Record
 from strips_framework.user_files import is_file
@@ -35,6 +35,11 @@ if TYPE_CHECKING:
     from strips_framework.worldmodel.proving import TheoremProver
 
 GROUND_STRATEGY = "ground-strategy"
+LIFTED_STRATEGY = "lifted-strategy"
+#: The lifted heuristic a lifted strategy gets when the config names no ``[heuristic]``:
+#: the first of these that is registered (the evaluators plugin registers ``ff``; the
+#: core's own ``goal-count`` is there without any plugin).
+LIFTED_DEFAULT_HEURISTICS = ("ff", "goal-count")
 
 
 class Planner(Record):
@@ -85,9 +90,17 @@ class Planner(Record):
         """This planner, after building each component it uses, and every one the config
         file names even if this strategy does not use it (a ``[heuristic]`` typo is a typo
         with means-ends too), and checking that the ones used fit together."""
+        if self.searches_lifted_tasks and "heuristic" not in self.config.chosen:
+            names = self.registry.names("lifted-heuristic")
+            default = next((n for n in LIFTED_DEFAULT_HEURISTICS if n in names), None)
+            if default is not None and default != self.config.choices["heuristic"].name:
+                choices = {**self.config.choices, "heuristic": Choice("heuristic", default)}
+                return self._replace(config=self.config._replace(choices=choices)).checked()
         kinds = list(self.kinds_used())
         for table in sorted(self.config.chosen):
             kind = self.config.strategy_kind(self.registry) if table == "strategy" else table
+            if table == "heuristic" and self.searches_lifted_tasks:
+                kind = "lifted-heuristic"
             if kind not in kinds:
                 kinds.append(kind)
         for kind in kinds:
@@ -100,12 +113,21 @@ class Planner(Record):
         forward search never loads the prover, and a means-ends search no heuristic)."""
         if self.searches_ground_tasks:
             return (GROUND_STRATEGY, "heuristic")
+        if self.searches_lifted_tasks:
+            # The query engine is the builtin join engine unless [prover] names one.
+            engine = ("prover",) if "prover" in self.config.chosen else ()
+            return (LIFTED_STRATEGY, "lifted-heuristic", *engine)
         return ("strategy", "prover", "difference", "relevance", "evaluator")
 
     @property
     def searches_ground_tasks(self) -> bool:
         """True when the configured strategy searches ground tasks (PDDL input only)."""
         return self.config.strategy_kind(self.registry) == GROUND_STRATEGY
+
+    @property
+    def searches_lifted_tasks(self) -> bool:
+        """True when the configured strategy searches PDDL tasks without grounding."""
+        return self.config.strategy_kind(self.registry) == LIFTED_STRATEGY
 
     def for_pddl(self) -> Planner:
         """The planner for PDDL input: the config's, with the strategy defaulting to
@@ -166,6 +188,8 @@ class Planner(Record):
         it grounded, a world-model strategy its translation to a :class:`Problem`.
         (Call :meth:`for_pddl` first for ``strips solve``'s default strategy.)"""
         clock = clock or Clock(self.config.limits.time)
+        if self.searches_lifted_tasks:
+            return self.solve_lifted(pddl, clock, parse_seconds)
         if not self.searches_ground_tasks:
             from strips_framework.pddl import to_problem
 
@@ -188,6 +212,36 @@ class Planner(Record):
             parse_seconds=parse_seconds,
             ground_seconds=searching_since - grounding_since,
             search_seconds=clock.elapsed() - searching_since,  # the heuristic's set-up included
+        )
+        return result._replace(statistics=statistics, seconds=clock.elapsed())
+
+    def solve_lifted(
+        self, pddl: PddlTask, clock: Clock | None = None, parse_seconds: float = 0.0
+    ) -> Result:
+        """Search ``pddl`` without grounding it, with the configured lifted strategy and
+        lifted heuristic; the query engine is the ``[prover]`` the config names (a prover
+        that is no query engine answers through
+        :class:`~strips_framework.lifted.prover.ProverEngine`), else the join engine."""
+        from strips_framework.lifted.prover import engine_of
+        from strips_framework.lifted.successors import Successors
+        from strips_framework.lifted.task import LiftedTask
+
+        clock = clock or Clock(self.config.limits.time)
+        setup_since = clock.elapsed()
+        task = LiftedTask(pddl)
+        prover = self.prover() if "prover" in self.config.chosen else None
+        successors = Successors(task, engine_of(prover, task))
+        strategy = self.config.build(self.registry, LIFTED_STRATEGY)
+        heuristic = self.config.build(self.registry, "lifted-heuristic")
+        estimator = heuristic.for_task(pddl)
+        if self.progress is not None:
+            estimator = self.progress.estimator(estimator)
+        searching_since = clock.elapsed()
+        result = strategy.search_task(successors, estimator, self.config.limits, clock)
+        statistics = result.statistics._replace(
+            parse_seconds=parse_seconds,
+            setup_seconds=searching_since - setup_since,
+            search_seconds=clock.elapsed() - searching_since,
         )
         return result._replace(statistics=statistics, seconds=clock.elapsed())
 
