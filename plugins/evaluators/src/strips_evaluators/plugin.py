@@ -13,6 +13,7 @@ from strips_framework.plugin.hookspecs import hookimpl
 
 if TYPE_CHECKING:
     from strips_framework.forward.components import StateHeuristic
+    from strips_framework.lifted.components import LiftedHeuristic
     from strips_framework.means_ends.components import NodeEvaluator
 
 
@@ -46,3 +47,15 @@ def strips_register_heuristics() -> list[type[StateHeuristic]]:
         LMCutHeuristic,
         LandmarkCountHeuristic,
     ]
+
+
+@hookimpl
+def strips_register_lifted_heuristics() -> list[type[LiftedHeuristic]]:
+    from strips_evaluators.lifted.heuristics import (
+        LiftedAdditive,
+        LiftedFF,
+        LiftedGoalCount,
+        LiftedMax,
+    )
+
+    return [LiftedGoalCount, LiftedMax, LiftedAdditive, LiftedFF]

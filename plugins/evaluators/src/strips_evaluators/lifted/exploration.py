@@ -1,0 +1,202 @@
+"""Per-state relaxed explorations of a lifted task: hadd and hmax fact costs with best
+supporters, by a generalized Dijkstra over ground facts whose rule instances are found by
+semi-naive joins (see :mod:`.program`).
+
+This is the pure-Python reference. A fact's cost is final when it leaves the queue
+(*settled*); it then joins the indexes the plans look facts up in, and every plan it
+triggers is joined with the facts settled so far, so each rule instance is found exactly
+once, when its last body fact is settled, with every body cost final. As in the ground
+explorations (:mod:`strips_evaluators.heuristics.exploration`) the search stops once every
+goal fact is settled, so the goal's values equal the ground heuristics' on the grounded
+task; the supporter of a fact is the first instance to reach its final cost.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from heapq import heappop, heappush
+
+from strips_evaluators.lifted.program import AXIOM, Plan, Program, Rule, Step, passes
+from strips_framework.lifted.components import ActionInstance, GroundAtom
+
+#: A rule instance that achieved a fact: the rule, its fluent body facts, its slots.
+Supporter = tuple[Rule, tuple[GroundAtom, ...], tuple[str, ...]]
+Index = dict[tuple[str, ...], list[GroundAtom]]
+
+
+class Exploration:
+    """The explorations of one task; :meth:`costs` runs one per state."""
+
+    def __init__(self, program: Program) -> None:
+        self.program = program
+        #: Instances of rules without fluent body atoms, the same in every state:
+        #: ``(cost, heads, supporter)``.
+        self.unconditional: list[tuple[int, list[GroundAtom], Supporter]] = []
+        for plan in program.unconditional:
+            join(program, plan, None, {}, self._collect)
+
+    def _collect(self, plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
+        rule = plan.rule
+        heads = [(name, *[slots[s] for s in terms]) for name, terms in rule.heads]
+        self.unconditional.append(
+            (self.program.cost_of(rule, slots), heads, (rule, (), tuple(slots)))
+        )
+
+    def costs(
+        self, state: frozenset[GroundAtom], additive: bool
+    ) -> tuple[dict[GroundAtom, float], dict[GroundAtom, Supporter]]:
+        """The hadd (``additive``) or hmax costs of the facts reached before every goal
+        fact is settled, and their best supporters (none for the state's facts)."""
+        program = self.program
+        cost: dict[GroundAtom, float] = {}
+        supporter: dict[GroundAtom, Supporter] = {}
+        heap: list[tuple[float, GroundAtom]] = []
+        for fact in state:
+            cost[fact] = 0
+            heap.append((0, fact))
+        for value, heads, support in self.unconditional:
+            for head in heads:
+                if value < cost.get(head, math.inf):
+                    cost[head] = value
+                    supporter[head] = support
+                    heap.append((value, head))
+        heap.sort()
+        indexes: dict[str, list[tuple[tuple[int, ...], Index]]] = {
+            predicate: [(positions, {}) for positions in all_positions]
+            for predicate, all_positions in program.fluent_indexes.items()
+        }
+        lookup: dict[tuple[str, tuple[int, ...]], Index] = {
+            (predicate, positions): index
+            for predicate, pairs in indexes.items()
+            for positions, index in pairs
+        }
+        goal = set(program.fluent_goal)
+        goals_left = len(goal)
+        if not goals_left:
+            return cost, supporter
+        triggers = program.triggers
+
+        def fire(plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
+            rule = plan.rule
+            body = set(matched) if rule.repeated_predicates else matched
+            if additive:
+                value = program.cost_of(rule, slots) + sum([cost[f] for f in body])
+            else:
+                value = program.cost_of(rule, slots) + max([cost[f] for f in body], default=0)
+            for name, terms in rule.heads:
+                head = (name, *[slots[s] for s in terms])
+                if value < cost.get(head, math.inf):
+                    cost[head] = value
+                    supporter[head] = (rule, tuple(matched), tuple(slots))
+                    heappush(heap, (value, head))
+
+        while heap:
+            value, fact = heappop(heap)
+            if cost[fact] != value:
+                continue  # reached more cheaply after it was queued
+            if fact in goal:
+                goals_left -= 1
+                if not goals_left:
+                    break
+            predicate = fact[0]
+            for positions, index in indexes.get(predicate, ()):
+                key = tuple([fact[i] for i in positions])
+                found = index.get(key)
+                if found is None:
+                    index[key] = [fact]
+                else:
+                    found.append(fact)
+            for plan in triggers.get(predicate, ()):
+                join(program, plan, fact, lookup, fire)
+        return cost, supporter
+
+def join(
+    program: Program,
+    plan: Plan,
+    fact: GroundAtom | None,
+    lookup: dict[tuple[str, tuple[int, ...]], Index],
+    emit: Callable[[Plan, list, list[GroundAtom]], None],
+) -> None:
+    """Every completion of ``plan`` with its trigger bound to ``fact`` (no trigger when
+    None), fluent atoms matched in ``lookup`` (indexes by ``(predicate, positions)``):
+    ``emit(plan, slots, matched)`` with the fluent facts matched, trigger first."""
+    slots: list = list(plan.rule.template)
+    static = program.static_facts
+    matched: list[GroundAtom] = []
+    if fact is not None:
+        if not _match(plan.trigger, fact, slots, static):
+            return
+        matched.append(fact)
+    steps = plan.steps
+    last = len(steps)
+    static_indexes = program.static_indexes
+
+    def extend(depth: int) -> None:
+        if depth == last:
+            for _ in program.instances(plan, slots):
+                emit(plan, slots, matched)
+            return
+        step = steps[depth]
+        where = (step.predicate, step.positions)
+        index = lookup.get(where) if step.fluent else static_indexes[where]
+        if not index:
+            return
+        candidates = index.get(tuple([slots[s] for s in step.key]))
+        if not candidates:
+            return
+        for candidate in candidates:
+            if step.before_trigger and candidate == fact:
+                continue
+            if _match(step, candidate, slots, static):
+                if step.fluent:
+                    matched.append(candidate)
+                    extend(depth + 1)
+                    matched.pop()
+                else:
+                    extend(depth + 1)
+
+    extend(0)
+
+
+def _match(step: Step, fact: GroundAtom, slots: list, static: dict) -> bool:
+    for position, slot in step.binds:
+        slots[slot] = fact[position]
+    for position, slot in step.repeats:
+        if fact[position] != slots[slot]:
+            return False
+    return passes(step.checks, slots, static)
+
+
+def relaxed_plan(
+    program: Program,
+    cost: dict[GroundAtom, float],
+    supporter: dict[GroundAtom, Supporter],
+) -> tuple[float, dict[tuple, Supporter]]:
+    """hFF: the cost of the relaxed plan the best supporters give, walking back from the
+    goal, and its rule instances by ``(rule number, slots)``; a ground operator used for
+    several of its effects counts once (as in the ground hFF)."""
+    goal = program.fluent_goal
+    if program.static_goal_missing or any(fact not in cost for fact in goal):
+        return math.inf, {}
+    plan: dict[tuple, Supporter] = {}
+    operators: dict[tuple, int] = {}
+    subgoals = list(goal)
+    while subgoals:
+        support = supporter.get(subgoals.pop())
+        if support is None:
+            continue
+        rule, body, slots = support
+        key = (rule.number, slots)
+        if key in plan:
+            continue
+        plan[key] = support
+        if rule.action != AXIOM:
+            identity = (rule.action, rule.operator, slots[: rule.identity])
+            operators[identity] = program.cost_of(rule, list(slots))
+        subgoals.extend(body)
+    return sum(operators.values()), plan
+
+
+def action_instance(program: Program, rule: Rule, slots: tuple[str, ...]) -> ActionInstance:
+    return program.task.domain.actions[rule.action].name, slots[: rule.arity]

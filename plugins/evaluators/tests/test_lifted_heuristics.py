@@ -1,0 +1,155 @@
+"""The lifted heuristics against their ground namesakes, on every state a breadth-first
+search reaches (up to a bound) in small tasks: local PDDL tasks, random lifted tasks with
+types, constants, equality, negative and disjunctive preconditions, derived predicates,
+conditional effects and action costs (:mod:`random_pddl`), and the first task of a few
+IPC domains when the shared benchmarks are there.
+
+hadd, hmax and goal count must be equal. hFF may differ where several supporters are
+equally cheap, so it is checked for what holds whatever the choice: it lies between hmax
+and hadd, its relaxed plan supports every goal fact and every precondition it uses, it
+costs what the value says, and its preferred operators apply in the state and are ground
+operators of the task.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from pathlib import Path
+
+import pytest
+from random_pddl import random_pddl_task
+
+from strips_evaluators.heuristics.additive import AdditiveHeuristic
+from strips_evaluators.heuristics.ff import FFHeuristic
+from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
+from strips_evaluators.heuristics.hmax import MaxHeuristic
+from strips_evaluators.lifted.closure import DerivedClosure
+from strips_evaluators.lifted.exploration import Exploration, relaxed_plan
+from strips_evaluators.lifted.heuristics import (
+    LiftedAdditive,
+    LiftedFF,
+    LiftedGoalCount,
+    LiftedMax,
+)
+from strips_evaluators.lifted.program import AXIOM, Program
+from strips_framework.grounding import ground
+from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.grounding.task import GroundTask
+from strips_framework.lifted.components import LiftedState
+from strips_framework.pddl import PddlTask, find_domain, load_task
+
+ROOT = Path(__file__).parents[3]
+DATA = ROOT / "tests" / "pddl" / "data"
+IPC = ROOT.parent / "shared" / "bench" / "ipc"
+LOCAL = ["blocks-3", "briefcase-2", "crates-3", "elevator-1", "lamps-1", "rooms-1", "rooms-2",
+         "switches-1"]  # fmt: skip
+SMALL_IPC = ["blocks", "gripper", "logistics", "miconic", "satellite", "rovers"]
+
+
+def lifted_state(task: GroundTask, state: int, basic: set[str]) -> LiftedState:
+    """The fluent atoms of a ground state (derived and made-up facts left out)."""
+    atoms = (tuple(name[1:-1].split()) for name in task.facts_of(state))
+    return frozenset(atom for atom in atoms if atom[0] in basic)
+
+
+def reachable(task: GroundTask, limit: int) -> list[int]:
+    """The first ``limit`` states of a breadth-first search from the initial state."""
+    evaluator = AxiomEvaluator(task)
+    seen = {task.init}
+    queue = deque([task.init])
+    found = []
+    while queue and len(found) < limit:
+        state = queue.popleft()
+        found.append(state)
+        for op in task.operators:
+            if op.applicable(state):
+                successor = evaluator.evaluate(op.apply(state))
+                if successor not in seen:
+                    seen.add(successor)
+                    queue.append(successor)
+    return found
+
+
+def compare(task: PddlTask, limit: int) -> int:
+    """Compares every heuristic on up to ``limit`` reachable states; the number of
+    states where lifted and ground hFF are equal."""
+    grounded = ground(task, prune_irrelevant=False)
+    changed = {atom.predicate for action in task.domain.actions for atom in action.changed_atoms()}
+    ground_h = {
+        "hadd": AdditiveHeuristic().for_task(grounded),
+        "hmax": MaxHeuristic().for_task(grounded),
+        "goal-count": GoalCountHeuristic().for_task(grounded),
+        "ff": FFHeuristic().for_task(grounded),
+    }
+    lifted_h = {
+        "hadd": LiftedAdditive().for_task(task),
+        "hmax": LiftedMax().for_task(task),
+        "goal-count": LiftedGoalCount().for_task(task),
+        "ff": LiftedFF().for_task(task),
+    }
+    program = Program(task)
+    exploration = Exploration(program)
+    closure = DerivedClosure(program)
+    names = {op.name for op in grounded.operators}
+    equal_ff = 0
+    for state in reachable(grounded, limit):
+        lifted = lifted_state(grounded, state, changed)
+        values = {}
+        for name in ("hadd", "hmax", "goal-count"):
+            values[name] = lifted_h[name].estimate(lifted)
+            assert values[name] == ground_h[name].estimate(state), (name, sorted(lifted))
+        ff, preferred = lifted_h["ff"].estimate_with_preferred(lifted)
+        assert ff == lifted_h["ff"].estimate(lifted)
+        assert values["hmax"] <= ff <= values["hadd"]
+        assert (ff == 0) == (values["hadd"] == 0) and (ff == math.inf) == (values["hadd"] == math.inf)
+        equal_ff += ff == ground_h["ff"].estimate(state)
+        check_relaxed_plan(program, exploration, lifted, ff)
+        model = closure.model(lifted)
+        assert {a for a in model if not a[0].startswith("@")} == lifted_state(
+            grounded, state, changed | {rule.head.predicate for rule in task.domain.derived}
+        )
+        for action, args in preferred:
+            name = "(" + " ".join((action, *args)) + ")"
+            assert name in names
+            assert any(op.name == name and op.applicable(state) for op in grounded.operators)
+    return equal_ff
+
+
+def check_relaxed_plan(program: Program, exploration: Exploration, state, value: float) -> None:
+    cost, supporter = exploration.costs(state, additive=True)
+    total, plan = relaxed_plan(program, cost, supporter)
+    assert total == value
+    if value == math.inf:
+        return
+    achieved = set(state)
+    for rule, body, slots in plan.values():
+        achieved.update((name, *[slots[s] for s in terms]) for name, terms in rule.heads)
+    for fact in program.fluent_goal:
+        assert fact in achieved
+    operators = {}
+    for rule, body, slots in plan.values():
+        assert all(fact in achieved for fact in body)
+        if rule.action != AXIOM:
+            operators[(rule.action, rule.operator, slots[: rule.identity])] = program.cost_of(
+                rule, list(slots)
+            )
+    assert sum(operators.values()) == value
+
+
+@pytest.mark.parametrize("name", LOCAL)
+def test_local_tasks(name):
+    domain = DATA / (name.rsplit("-", 1)[0] + "-domain.pddl")
+    compare(load_task(domain, DATA / f"{name}.pddl"), limit=60)
+
+
+@pytest.mark.parametrize("seed", range(60))
+def test_random_tasks(seed):
+    compare(random_pddl_task(seed), limit=40)
+
+
+@pytest.mark.skipif(not IPC.is_dir(), reason="the shared IPC benchmarks are not available")
+@pytest.mark.parametrize("domain", SMALL_IPC)
+def test_ipc_first_tasks(domain):
+    problem = IPC / domain / "task01.pddl"
+    compare(load_task(find_domain(problem), problem), limit=25)
