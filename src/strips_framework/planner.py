@@ -12,6 +12,7 @@ grounded. Both return a :class:`~strips_framework.result.Result`.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -20,7 +21,7 @@ from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
 from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
-from strips_framework.plugin.config import Choice, Config
+from strips_framework.plugin.config import PDDL_DEFAULT_STRATEGY, Choice, Config
 from strips_framework.plugin.registry import Registry
 from strips_framework.records import Record
 from strips_framework.user_files import is_file
@@ -36,6 +37,8 @@ if TYPE_CHECKING:
 
 GROUND_STRATEGY = "ground-strategy"
 LIFTED_STRATEGY = "lifted-strategy"
+#: The strategy PDDL input gets when the config names none and grounding looks expensive.
+PDDL_LIFTED_STRATEGY = "lifted-gbfs"
 #: The lifted heuristic a lifted strategy gets when the config names no ``[heuristic]``:
 #: the first of these that is registered (the evaluators plugin registers ``ff``; the
 #: core's own ``goal-count`` is there without any plugin).
@@ -175,7 +178,36 @@ class Planner(Record):
             problem = self.load(problem_path)
             return self.solve(problem, clock, _read_library(library, problem))
         pddl = self.load_pddl(problem_path, domain_path)
-        return self.for_pddl().solve_pddl(pddl, clock, parse_seconds=clock.elapsed(), library=library)
+        planner, reason = self.for_pddl_task(pddl)
+        if reason:
+            print(f"strips: {reason}", file=sys.stderr)
+        return planner.solve_pddl(pddl, clock, parse_seconds=clock.elapsed(), library=library)
+
+    def for_pddl_task(self, pddl: PddlTask) -> tuple[Planner, str | None]:
+        """The planner for ``pddl`` and, when the config names no strategy, the line
+        saying which search was chosen and why: the ground search
+        (:data:`~strips_framework.plugin.config.PDDL_DEFAULT_STRATEGY`) when grounding
+        looks cheap, else the lifted one (:data:`PDDL_LIFTED_STRATEGY`), decided from
+        :func:`~strips_framework.lifted.estimate.estimated_operators` before grounding
+        anything."""
+        if "strategy" in self.config.chosen:
+            return self.for_pddl(), None
+        from strips_framework.lifted.estimate import CHEAP_GROUNDING, estimated_operators
+        from strips_framework.lifted.task import LiftedTask
+
+        estimate = estimated_operators(LiftedTask(pddl))
+        if estimate <= CHEAP_GROUNDING:
+            name = PDDL_DEFAULT_STRATEGY
+            why = f"grounding looks cheap (about {estimate:,.0f} operators estimated)"
+        else:
+            name = PDDL_LIFTED_STRATEGY
+            why = (
+                f"grounding looks expensive (about {estimate:.2g} operators estimated, more "
+                f"than {CHEAP_GROUNDING:,}): searching without grounding"
+            )
+        choices = {**self.config.choices, "strategy": Choice("strategy", name)}
+        planner = Planner(self.registry, self.config._replace(choices=choices), self.progress)
+        return planner.checked(), f"strategy {name}: {why}"
 
     def solve_pddl(
         self,

@@ -27,6 +27,7 @@ from strips_framework.lifted.query import FactBase, JoinEngine, QueryEngine, Rel
 from strips_framework.lifted.task import LiftedTask, Query, is_variable
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
+from strips_framework.options import Configurable
 from strips_framework.pddl.formulas import Atom
 from strips_framework.worldmodel.proving import PROVED, SATURATED, ProofResult, ProofTask, TheoremProver
 
@@ -80,12 +81,15 @@ class ProverEngine(JoinEngine):
                 return None
             relations.append(Relation(tuple(variables), sorted(kept)))
         if seed:
+            if any(v in query.domains and value not in query.domains[v] for v, value in seed.items()):
+                return None
             relations.append(Relation(tuple(seed), [tuple(seed.values())]))
         return relations
 
 
-class JoinProver:
-    """The join engine as a prover of definite Horn tasks (module docstring)."""
+class JoinProver(Configurable):
+    """The join engine as a prover of definite Horn tasks (module docstring); it has no
+    options (it needs no effort bound: a Datalog model is finite)."""
 
     name: ClassVar[str] = "joins"
     capabilities: ClassVar[frozenset[str]] = frozenset(

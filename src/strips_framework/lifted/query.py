@@ -211,8 +211,11 @@ class JoinEngine:
     ) -> list[Relation] | None:
         """The relations of the query's positive atoms (and one row for ``seed``);
         None when one is empty (the query has no answer)."""
-        relations = [facts.relation(atom, query.domains) for atom in query.positive]
+        domains = query.domains
+        relations = [facts.relation(atom, domains) for atom in query.positive]
         if seed:
+            if any(v in domains and value not in domains[v] for v, value in seed.items()):
+                return None  # an equality merged a seeded variable with one of another type
             relations.append(Relation(tuple(seed), [tuple(seed.values())]))
         for relation in relations:
             if not relation.rows:
@@ -235,7 +238,9 @@ class JoinEngine:
         if plan is None:
             edges = [frozenset(r.columns) for r in relations]
             plan = self._plans[(query, seeded)] = _Plan(join_tree(edges) if self.yannakakis else None)
-        if plan.tree is not None:
+        if not relations:  # no variables: only ground negated atoms and inequalities
+            columns, rows = [], _Filters(query, facts).apply([], [()])
+        elif plan.tree is not None:
             columns, rows = self._acyclic(relations, plan.tree, query, facts)
         else:
             columns, rows = self._greedy(relations, query, facts)

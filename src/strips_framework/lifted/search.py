@@ -233,6 +233,7 @@ class LiftedBFWS(LiftedStrategy):
             else:
                 preferred_steps = set()
             for step in successors.applicable(facts):
+                budget.check(run.expanded)  # each child is evaluated: a slow h adds up
                 run.generated += 1
                 child, g = run.child(number, step)
                 packed = space.pack(child)
