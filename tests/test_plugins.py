@@ -54,7 +54,7 @@ def test_unknown_name_lists_the_available_ones_and_the_distribution():
     with pytest.raises(PluginError) as error:
         registry.get("prover", "z3")
     assert str(error.value) == (
-        "prover 'z3' is not registered (available: none); is strips-z3-prover installed?"
+        "prover 'z3' is not registered (available: joins); is strips-z3-prover installed?"
     )
     with pytest.raises(PluginError, match=r"strategy 'dfs' is not registered \(available: means-ends, "):
         registry.get("strategy", "dfs")
@@ -92,4 +92,4 @@ def test_misspelled_hook_implementation_is_an_error():
 
 def test_autoload_switch(monkeypatch):
     monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
-    assert Registry(get_plugin_manager()).names("prover") == []
+    assert Registry(get_plugin_manager()).names("prover") == ["joins"]  # the builtin one

@@ -72,6 +72,12 @@ VOCABULARY: dict[str, dict[str, str]] = {
         PREFERRED_OPERATORS: "estimate_with_preferred names operators applicable in the "
         "state that lead towards the goal (heuristics without it name none)",
     },
+    "lifted-heuristic": {
+        ADMISSIBLE: "the estimate never exceeds the cost of an optimal plan from the state",
+        PREFERRED_OPERATORS: "estimate_with_preferred names action instances applicable "
+        "in the state that lead towards the goal (heuristics without it name none)",
+    },
+    "lifted-strategy": {},
     "strategy": {
         OPTIMAL: "the plan found is a shortest one when the strategy's soft requirements "
         "(e.g. an admissible evaluator) hold",
