@@ -81,11 +81,13 @@ class FactBase:
         static_predicates: frozenset[str] = frozenset(),
     ) -> None:
         self.atoms: set[GroundAtom] = set(atoms)
-        by_predicate: dict[str, list[GroundAtom]] = {}
+        # Filed by predicate and arity (a prover's task may use a name at two arities).
+        by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
         for atom in self.atoms:
-            found = by_predicate.get(atom[0])
+            key = (atom[0], len(atom))
+            found = by_predicate.get(key)
             if found is None:
-                by_predicate[atom[0]] = [atom]
+                by_predicate[key] = [atom]
             else:
                 found.append(atom)
         self._by_predicate = by_predicate
@@ -105,48 +107,62 @@ class FactBase:
             self.atoms.update(new)
             touched = set()
             for atom in new:
-                self._by_predicate.setdefault(atom[0], []).append(atom)
+                self._by_predicate.setdefault((atom[0], len(atom)), []).append(atom)
                 touched.add(atom[0])
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
         return new
 
-    def relation(self, atom: Atom, domains: dict[str, frozenset[str]]) -> Relation:
-        """The atoms matching ``atom`` as rows over its variables (first occurrences in
-        order), each variable restricted to its domain when it has one."""
-        if self.static is not None and atom.predicate in self._static_predicates:
-            return self.static.relation(atom, domains)
-        args = atom.args
-        key = (atom.predicate, args, tuple(id(domains.get(a)) for a in args))
-        found = self._relations.get(key)
+    def relation(self, pattern: Pattern) -> Relation:
+        """The atoms matching ``pattern`` as rows over its variables."""
+        if self.static is not None and pattern.predicate in self._static_predicates:
+            return self.static.relation(pattern)
+        found = self._relations.get(pattern.key)
         if found is None:
-            found = self._relations[key] = self._match(atom, domains)
+            found = self._relations[pattern.key] = pattern.match(
+                self._by_predicate.get((pattern.predicate, pattern.size), ())
+            )
         return found
 
-    def _match(self, atom: Atom, domains: dict[str, frozenset[str]]) -> Relation:
+
+class Pattern:
+    """A query atom compiled for matching: the objects it needs at which positions, its
+    repeated variables, its variables' domains, and which positions become the
+    relation's columns (each variable's first occurrence, in order). ``key`` is the same
+    for equal atoms with the same domains, so a state matches each pattern once."""
+
+    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size")
+
+    def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
+        self.predicate = atom.predicate
+        self.key = (atom.predicate, atom.args, tuple(id(domains.get(a)) for a in atom.args))
         columns: list[str] = []
-        taken: list[int] = []
-        checks: list[tuple[int, str]] = []  # position, object
-        repeats: list[tuple[int, int]] = []  # position, earlier position
-        typed: list[tuple[int, frozenset[str]]] = []
+        self.taken: list[int] = []
+        self.checks: list[tuple[int, str]] = []  # position, object
+        self.repeats: list[tuple[int, int]] = []  # position, earlier position
+        self.typed: list[tuple[int, frozenset[str]]] = []
         for position, term in enumerate(atom.args, start=1):
             if not is_variable(term):
-                checks.append((position, term))
+                self.checks.append((position, term))
             elif term in columns:
-                repeats.append((position, taken[columns.index(term)]))
+                self.repeats.append((position, self.taken[columns.index(term)]))
             else:
                 columns.append(term)
-                taken.append(position)
+                self.taken.append(position)
                 domain = domains.get(term)
                 if domain is not None:
-                    typed.append((position, domain))
-        size = len(atom.args) + 1
-        candidates = [a for a in self._by_predicate.get(atom.predicate, ()) if len(a) == size]
-        for position, value in checks:
+                    self.typed.append((position, domain))
+        self.columns = tuple(columns)
+        self.size = len(atom.args) + 1
+
+    def match(self, atoms: Sequence[GroundAtom]) -> Relation:
+        candidates = atoms  # of the pattern's predicate and arity
+        for position, value in self.checks:
             candidates = [a for a in candidates if a[position] == value]
-        for position, earlier in repeats:
+        for position, earlier in self.repeats:
             candidates = [a for a in candidates if a[position] == a[earlier]]
-        for position, domain in typed:
+        for position, domain in self.typed:
             candidates = [a for a in candidates if a[position] in domain]
+        taken = self.taken
         if len(taken) == 1:
             only = taken[0]
             rows = [(a[only],) for a in candidates]
@@ -154,7 +170,7 @@ class FactBase:
             rows = list(map(itemgetter(*taken), candidates))
         else:
             rows = [()] if candidates else []
-        return Relation(tuple(columns), rows)
+        return Relation(self.columns, rows)
 
 
 class QueryEngine(Protocol):
@@ -205,6 +221,7 @@ class JoinEngine:
         self.objects = tuple(objects)
         self.yannakakis = yannakakis
         self._plans: dict[tuple[Query, tuple[str, ...]], _Plan] = {}
+        self._patterns: dict[Query, list[Pattern]] = {}
 
     def relations(
         self, query: Query, facts: FactBase, seed: dict[str, str] | None
@@ -212,7 +229,10 @@ class JoinEngine:
         """The relations of the query's positive atoms (and one row for ``seed``);
         None when one is empty (the query has no answer)."""
         domains = query.domains
-        relations = [facts.relation(atom, domains) for atom in query.positive]
+        patterns = self._patterns.get(query)
+        if patterns is None:
+            patterns = self._patterns[query] = [Pattern(atom, domains) for atom in query.positive]
+        relations = [facts.relation(pattern) for pattern in patterns]
         if seed:
             if any(v in domains and value not in domains[v] for v, value in seed.items()):
                 return None  # an equality merged a seeded variable with one of another type
