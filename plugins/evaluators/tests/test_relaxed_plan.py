@@ -1,4 +1,5 @@
-"""The relaxed-plan evaluator on a road of places A - B - C (and an unconnected D)."""
+"""The relaxed-plan evaluator on a road of places A - B - C (and an unconnected D), with
+its relaxation grounded and explored lifted (every test runs with both)."""
 
 from __future__ import annotations
 
@@ -42,7 +43,16 @@ def _node(*goals: Goal, cost: int = 0, successors: int = 0, model: WorldModel = 
     return node
 
 
+RELAXATION = "ground"
+
+
+@pytest.fixture(autouse=True, params=["ground", "lifted"])
+def relaxation(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(globals(), "RELAXATION", request.param)
+
+
 def _score(node: Node, **options: object) -> float:
+    options.setdefault("relaxation", RELAXATION)
     evaluator = RelaxedPlanEvaluator(**options)  # type: ignore[arg-type]
     return evaluator_for_problem(evaluator, [GO], node.model.initial).evaluate(node)
 

@@ -29,12 +29,12 @@ cdef class SuccessorGenerator:
     def __cinit__(self, reference, task):
         operators = task.operators
         self.num_bytes = (len(task.facts) + 7) // 8
-        entries = [index for index, _, _ in reference._unkeyed]
+        entries = list(reference.unkeyed)
         self.num_unkeyed = len(entries)
         starts = [len(entries)]
+        buckets = reference.buckets
         for fact in range(len(task.facts)):
-            for index, _, _ in reference._buckets.get(1 << fact, ()):
-                entries.append(index)
+            entries.extend(buckets.get(fact, ()))
             starts.append(len(entries))
         pre_starts, pre, neg_starts, neg = [0], [], [0], []
         for index in entries:

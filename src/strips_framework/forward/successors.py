@@ -16,18 +16,19 @@ arrays, with the same operators in the same order, so searches expand the same s
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Callable, Mapping, Sequence
 from typing import Protocol
 
 from strips_framework.compiled import compiled_module
-from strips_framework.grounding.task import GroundTask
+from strips_framework.grounding.task import GroundOperator, GroundTask, facts_in
 
 
 class Successors(Protocol):
     """What a state space needs of a successor generator."""
 
-    keep: tuple[int, ...]
-    add: tuple[int, ...]
-    effects: tuple[tuple[tuple[int, int, int, int], ...], ...] | None
+    keep: Mapping[int, int]
+    add: Mapping[int, int]
+    effects: Mapping[int, tuple[tuple[int, int, int, int], ...]] | None
 
     def applicable(self, state: int) -> list[int]: ...
 
@@ -40,47 +41,62 @@ def successor_generator(task: GroundTask, compiled: bool | None = None) -> Succe
     return reference if module is None else module.SuccessorGenerator(reference, task)
 
 
+class _OperatorMasks(dict[int, int]):
+    """Per operator number, a mask made on first use (``mask(operator)``): a search applies
+    few of a large task's operators, and a mask costs as much as the task has facts."""
+
+    def __init__(self, mask: Callable[[GroundOperator], int], operators: Sequence[GroundOperator]) -> None:
+        super().__init__()
+        self._mask = mask
+        self._operators = operators
+
+    def __missing__(self, operator: int) -> int:
+        value = self[operator] = self._mask(self._operators[operator])
+        return value
+
+
 class SuccessorGenerator:
     def __init__(self, task: GroundTask) -> None:
         operators = task.operators
         needed_by = Counter(fact for op in operators for fact in op.pre)
-        buckets: dict[int, list[tuple[int, int, int]]] = {}
-        unkeyed: list[tuple[int, int, int]] = []
+        #: Per key fact, the operators filed under it (see the module docstring).
+        buckets: dict[int, list[int]] = {}
+        unkeyed: list[int] = []
         for index, op in enumerate(operators):
-            entry = (index, op.pre_mask, op.pre_neg_mask)
             if op.pre:
                 key = min(op.pre, key=lambda fact: (needed_by[fact], fact))
-                buckets.setdefault(1 << key, []).append(entry)
+                buckets.setdefault(key, []).append(index)
             else:
-                unkeyed.append(entry)
-        self._buckets = {bit: tuple(entries) for bit, entries in buckets.items()}
-        self._key_mask = sum(self._buckets)
-        self._unkeyed = tuple(unkeyed)
+                unkeyed.append(index)
+        self.buckets: dict[int, tuple[int, ...]] = {
+            key: tuple(entries) for key, entries in buckets.items()
+        }
+        self.unkeyed = tuple(unkeyed)
+        self._operators = operators
         #: Per operator: the mask of facts it keeps (all but its unconditional deletes),
         #: and its unconditional adds.
-        self.keep = tuple(~op.delete_mask for op in operators)
-        self.add = tuple(op.add_mask for op in operators)
+        self.keep = _OperatorMasks(lambda op: ~op.delete_mask, operators)
+        self.add = _OperatorMasks(lambda op: op.add_mask, operators)
         #: Per operator: its conditional effects as (condition, negated condition, delete,
         #: add) masks; None when no operator has any, so plain tasks pay nothing for them.
-        self.effects: tuple[tuple[tuple[int, int, int, int], ...], ...] | None = None
+        self.effects: Mapping[int, tuple[tuple[int, int, int, int], ...]] | None = None
         if any(op.effects for op in operators):
-            self.effects = tuple(
-                tuple(
-                    (e.condition_mask, e.condition_neg_mask, e.delete_mask, e.add_mask)
-                    for e in op.effects
-                )
-                for op in operators
-            )
+            self.effects = _OperatorMasks(_effect_masks, operators)  # type: ignore[arg-type]
 
     def applicable(self, state: int) -> list[int]:
         """The numbers of the operators applicable in ``state``."""
-        found = [i for i, pre, neg in self._unkeyed if state & pre == pre and not state & neg]
-        buckets = self._buckets
-        keys = state & self._key_mask
-        while keys:
-            bit = keys & -keys
-            for i, pre, neg in buckets[bit]:
-                if state & pre == pre and not state & neg:
+        operators = self._operators
+        found = [i for i in self.unkeyed if operators[i].applicable(state)]
+        buckets = self.buckets
+        for fact in facts_in(state):
+            for i in buckets.get(fact, ()):
+                if operators[i].applicable(state):
                     found.append(i)
-            keys ^= bit
         return found
+
+
+def _effect_masks(op: GroundOperator) -> tuple[tuple[int, int, int, int], ...]:
+    return tuple(
+        (e.condition_mask, e.condition_neg_mask, e.delete_mask, e.add_mask) for e in op.effects
+    )
+

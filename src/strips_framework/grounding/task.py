@@ -14,6 +14,8 @@ always has its derived facts evaluated.
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from strips_framework.records import Record
 
 
@@ -25,13 +27,49 @@ def mask_of(facts: tuple[int, ...]) -> int:
     return mask
 
 
-class GroundEffect(Record):
+def facts_in(state: int) -> list[int]:
+    """The fact numbers set in ``state``, ascending. Scans the binary string with
+    ``str.find``, so the Python-level work is one step per true fact, not per fact."""
+    digits = bin(state)[:1:-1]
+    facts = []
+    find = digits.find
+    position = find("1")
+    while position >= 0:
+        facts.append(position)
+        position = find("1", position + 1)
+    return facts
+
+
+class _Masked(Record):
+    """A record whose fact tuples named in ``MASKED`` also have masks, made on first use
+    (:meth:`masks`): a mask is as long as its highest fact number, so making them for
+    every operator up front would cost time and memory in proportion to operators times
+    facts, while a search touches the masks of the operators it applies."""
+
+    __slots__ = ()
+    MASKED: ClassVar[tuple[str, ...]] = ()
+
+    def masks(self) -> tuple[int, ...]:
+        """The masks of the ``MASKED`` fields, in order."""
+        masks = self._masks  # type: ignore[attr-defined]
+        if masks is None:
+            masks = self._masks = tuple([mask_of(getattr(self, name)) for name in self.MASKED])
+        return masks
+
+
+def _mask(position: int) -> property:
+    return property(lambda self: self.masks()[position], doc="A mask (see :class:`_Masked`).")
+
+
+class GroundEffect(_Masked):
     """A conditional effect of a ground operator: when every fact of ``condition`` holds
     and none of ``condition_neg`` does in the state the operator is applied in, the
     ``add`` facts become true and the ``delete`` facts false."""
 
     FIELDS = ("condition", "condition_neg", "add", "delete")
-    __slots__ = (*FIELDS, "condition_mask", "condition_neg_mask", "add_mask", "delete_mask")
+    MASKED = FIELDS
+    __slots__ = (*FIELDS, "_masks")
+    condition_mask, condition_neg_mask, add_mask, delete_mask = map(_mask, range(4))
 
     def __init__(
         self,
@@ -41,23 +79,22 @@ class GroundEffect(Record):
         delete: tuple[int, ...],
     ) -> None:
         self.condition, self.condition_neg, self.add, self.delete = condition, condition_neg, add, delete
-        self.condition_mask = mask_of(condition)
-        self.condition_neg_mask = mask_of(condition_neg)
-        self.add_mask = mask_of(add)
-        self.delete_mask = mask_of(delete)
+        self._masks: tuple[int, ...] | None = None
 
     def fires(self, state: int) -> bool:
-        mask = self.condition_mask
-        return state & mask == mask and not state & self.condition_neg_mask
+        condition, condition_neg, _, _ = self.masks()
+        return state & condition == condition and not state & condition_neg
 
 
-class GroundOperator(Record):
+class GroundOperator(_Masked):
     """One ground action. ``name`` is its IPC plan step, e.g. ``(pick-up a)``. ``add`` and
     ``delete`` are its unconditional effects, ``effects`` the conditional ones;
     ``pre_neg`` the facts that must be false (PDDL negative preconditions)."""
 
     FIELDS = ("name", "pre", "add", "delete", "cost", "pre_neg", "effects")
-    __slots__ = (*FIELDS, "pre_mask", "pre_neg_mask", "add_mask", "delete_mask")
+    MASKED = ("pre", "pre_neg", "add", "delete")
+    __slots__ = (*FIELDS, "_masks")
+    pre_mask, pre_neg_mask, add_mask, delete_mask = map(_mask, range(4))
 
     def __init__(
         self,
@@ -71,18 +108,16 @@ class GroundOperator(Record):
     ) -> None:
         self.name, self.pre, self.add, self.delete = name, pre, add, delete
         self.cost, self.pre_neg, self.effects = cost, pre_neg, effects
-        self.pre_mask = mask_of(pre)
-        self.pre_neg_mask = mask_of(pre_neg)
-        self.add_mask = mask_of(add)
-        self.delete_mask = mask_of(delete)
+        self._masks: tuple[int, ...] | None = None
 
     def applicable(self, state: int) -> bool:
-        return state & self.pre_mask == self.pre_mask and not state & self.pre_neg_mask
+        pre, neg, _, _ = self.masks()
+        return state & pre == pre and not state & neg
 
     def apply(self, state: int) -> int:
         """The successor before axioms: the conditional effects whose condition holds in
         ``state`` join the unconditional ones; deletes first, then adds (PDDL semantics)."""
-        delete, add = self.delete_mask, self.add_mask
+        _, _, add, delete = self.masks()
         for effect in self.effects:
             if effect.fires(state):
                 delete |= effect.delete_mask

@@ -39,6 +39,10 @@ Binding = dict[object, object]
 MAX_BINDINGS = 200
 #: How many models' relaxed costs a search keeps (the ones used last).
 MODELS_KEPT = 256
+#: With ``relaxation = "auto"``, grounding the relaxation stops past this many instances
+#: and the lifted relaxation is used instead: a task this large is one whose grounding
+#: costs more than the search it serves.
+GROUND_INSTANCES = 20_000
 
 
 @frozen
@@ -52,7 +56,9 @@ class RelaxedPlanEvaluator:
     the literals it adds; applying an operator lowers it. ``successor_weight`` per
     successor already made lets a node's children go before its next alternative.
 
-    *Relaxation.* Preconditions count their positive atoms (equalities are decided at
+    *Relaxation.* Grounded once when it is small, else explored per model without
+    grounding (option ``relaxation``; the two give the same hadd values and relaxed plans
+    up to ties). Preconditions count their positive atoms (equalities are decided at
     grounding); negated atoms and disjunctions are dropped, which only enlarges what is
     reachable. Atoms of predicates an axiom concludes, or an operator adds with a parameter
     its precondition does not bind, are taken as free: they are not grounded. A goal atom
@@ -68,12 +74,22 @@ class RelaxedPlanEvaluator:
     estimate: str = field(default="ff", validator=validators.in_(("ff", "add")))
     cost_weight: float = weight(0.5)
     successor_weight: float = weight(1.0)
+    #: ``"ground"`` grounds the relaxation once, ``"lifted"`` explores it per model
+    #: without grounding (:mod:`strips_evaluators.lifted`), ``"auto"`` grounds unless
+    #: grounding finds more than :data:`GROUND_INSTANCES` instances.
+    relaxation: str = field(default="auto", validator=validators.in_(("auto", "ground", "lifted")))
 
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel
     ) -> RelaxedPlanScorer:
-        """The ground relaxed task of one problem, built once per search."""
-        return RelaxedPlanScorer(self, _RelaxedTask.ground(operators, initial))
+        """The relaxed task of one problem, built once per search."""
+        task = None
+        if self.relaxation != "lifted":
+            limit = GROUND_INSTANCES if self.relaxation == "auto" else None
+            task = _RelaxedTask.ground(operators, initial, limit)
+        if task is None:
+            task = _LiftedRelaxedTask(operators, initial)
+        return RelaxedPlanScorer(self, task)
 
     def evaluate(self, node: Node) -> float:
         """Refused: the estimate needs the problem's operators, which a node lacks. The
@@ -110,8 +126,10 @@ class _ModelCosts:
     """One model's hadd costs and achievers, and the cheapest facts found for goals in
     it, by (goal atoms, atoms given by earlier goal-list operators)."""
 
-    cost: dict[int, float]
-    supporter: dict[int, int]
+    cost: dict
+    supporter: dict
+    #: The model's reached facts indexed for goal bindings (lifted relaxation only).
+    index: _FactIndex | None = None
     cheapest: dict[tuple[tuple[Atom, ...], frozenset[Atom]], list[int] | None] = field(
         factory=dict
     )
@@ -131,7 +149,10 @@ class _RelaxedTask:
         self._models: OrderedDict[WorldModel, _ModelCosts] = OrderedDict()
 
     @classmethod
-    def ground(cls, operators: Sequence[OperatorSchema], initial: InitialModel) -> _RelaxedTask:
+    def ground(
+        cls, operators: Sequence[OperatorSchema], initial: InitialModel, limit: int | None = None
+    ) -> _RelaxedTask | None:
+        """The ground relaxation; ``None`` once it has more than ``limit`` instances."""
         task = cls()
         task.free = _concluded_by_axioms(initial) | _added_unbound(operators)
         added = {(a[0], len(a)) for schema in operators for a in schema.add_list}
@@ -151,6 +172,8 @@ class _RelaxedTask:
                     adds = [_bind(a, binding) for a in schema.add_list]
                     adds = [a for a in adds if is_ground(a)]
                     instances[key] = (pre, adds)
+                    if limit is not None and len(instances) > limit:
+                        return None
                     for atom in adds:
                         if atom not in index.facts:
                             index.add(atom)
@@ -285,6 +308,56 @@ class _RelaxedTask:
                     seen.add(fact)
                     stack.append(fact)
         return plan
+
+
+class _Atoms(dict):
+    """The lifted relaxation's "fact numbers": every atom stands for itself."""
+
+    def __missing__(self, atom: Atom) -> Atom:
+        return atom
+
+    def __contains__(self, atom: object) -> bool:
+        return True
+
+
+class _LiftedRelaxedTask(_RelaxedTask):
+    """The same relaxation and estimates as :class:`_RelaxedTask`, explored per model by
+    the lifted heuristics' semi-naive Dijkstra (:mod:`strips_evaluators.lifted`) instead
+    of grounded up front: facts are the atoms themselves, and each model's reached facts
+    are indexed for its goals' bindings."""
+
+    def __init__(self, operators: Sequence[OperatorSchema], initial: InitialModel) -> None:
+        from strips_evaluators.lifted.exploration import Exploration
+        from strips_evaluators.lifted.schemata import SchemaProgram
+
+        super().__init__()
+        self.free = _concluded_by_axioms(initial) | _added_unbound(operators)
+        self.fact_ids = _Atoms()
+        described = [
+            (schema.name, _positive_atoms(schema.precondition),
+             _constraints(schema.precondition), list(schema.add_list))
+            for schema in operators
+        ]  # fmt: skip
+        facts = sorted((atom for atom in initial.facts if is_ground(atom)), key=repr)
+        self.program = SchemaProgram(described, facts)
+        self.exploration = Exploration(self.program)
+
+    def _of_model(self, model: WorldModel) -> _ModelCosts:
+        known = super()._of_model(model)
+        self.index = known.index  # type: ignore[assignment]
+        return known
+
+    def _hadd(self, model: WorldModel) -> tuple[dict, dict, _FactIndex]:  # type: ignore[override]
+        # Static facts too: they cost 0, and goals bind to them.
+        state = {atom for atom in model.facts() if is_ground(atom)}
+        cost, supporter = self.exploration.costs(state, additive=True, until=())
+        return cost, supporter, _FactIndex(sorted(cost, key=repr))
+
+    def _relaxed_plan(self, goals: list, supporter: dict) -> set:  # type: ignore[override]
+        from strips_evaluators.lifted.exploration import relaxed_plan
+
+        # The goals come from reached facts, so every one counts as reached (fact_ids).
+        return set(relaxed_plan(self.program, self.fact_ids, supporter, goals)[1])
 
 
 class _FactIndex:

@@ -34,18 +34,6 @@ cdef int* _ints(values) except NULL:
     return array
 
 
-def _bits(mask):
-    """The fact numbers set in ``mask``, ascending."""
-    facts = []
-    position = 0
-    while mask:
-        if mask & 1:
-            facts.append(position)
-        mask >>= 1
-        position += 1
-    return facts
-
-
 cdef class Explorer:
     """hadd, hmax and the hFF relaxed plan of a relaxed task, per state."""
 
@@ -120,13 +108,13 @@ cdef class Explorer:
         order = sorted(range(relaxed.true_fact), key=relaxed.start_rank.__getitem__)
         self.start_order = _ints(order)
         starts, facts_needed = [0], []
-        for mask in relaxed.pre_mask:
-            facts_needed.extend(_bits(mask))
+        for needed in relaxed.need:
+            facts_needed.extend(needed)
             starts.append(len(facts_needed))
         self.need_start, self.need = _ints(starts), _ints(facts_needed)
         starts, facts_lacking = [0], []
-        for mask in relaxed.neg_mask:
-            facts_lacking.extend(_bits(mask))
+        for lacking in relaxed.lack:
+            facts_lacking.extend(lacking)
             starts.append(len(facts_lacking))
         self.lack_start, self.lack = _ints(starts), _ints(facts_lacking)
         self.num_real = max([index + 1 for index in relaxed.operator] + [1])

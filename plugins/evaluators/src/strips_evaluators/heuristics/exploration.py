@@ -73,15 +73,19 @@ class PythonExplorer:
         precondition (with the effect's condition) holds in ``state``, ascending."""
         value, plan = relaxed_plan(self.relaxed, state)
         relaxed = self.relaxed
-        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
+        operator = relaxed.operator
         chosen = {
-            operator[op]
-            for op in plan
-            if operator[op] >= 0
-            and state & pre_masks[op] == pre_masks[op]
-            and not state & neg_masks[op]
+            operator[op] for op in plan if operator[op] >= 0 and holds(relaxed, op, state)
         }
         return value, sorted(chosen)
+
+
+def holds(relaxed: RelaxedTask, op: int, state: int) -> bool:
+    """Whether relaxed operator ``op``'s precondition (with its effect's condition) holds
+    in ``state``, negative facts included."""
+    return all(state >> fact & 1 for fact in relaxed.need[op]) and not any(
+        state >> fact & 1 for fact in relaxed.lack[op]
+    )
 
 
 #: ``supporter`` entry of a fact that holds in the state (nothing achieves it).

@@ -20,6 +20,7 @@ import math
 from typing import ClassVar
 
 
+from strips_evaluators.heuristics.exploration import holds
 from strips_evaluators.heuristics.landmarks import LandmarkGraph, find_landmarks
 from strips_evaluators.heuristics.relaxation import RelaxedTask, facts_in, relax
 from strips_framework.capabilities import PREFERRED_OPERATORS
@@ -69,14 +70,14 @@ class LandmarkCountEstimator(Record):
         if not missing and not again:
             return value, []
         graph, relaxed = self.graph, self.relaxed
-        operator, pre_masks, neg_masks = relaxed.operator, relaxed.pre_mask, relaxed.neg_mask
+        operator = relaxed.operator
         label = graph.label
         ready = [fact for fact in facts_in(missing) if label[fact] & missing == 1 << fact]
         preferred = {
             operator[op]
             for fact in ready + facts_in(again)
             for op in graph.achievers[fact]
-            if state & pre_masks[op] == pre_masks[op] and not state & neg_masks[op]
+            if holds(relaxed, op, state)
         }
         return value, sorted(preferred)
 

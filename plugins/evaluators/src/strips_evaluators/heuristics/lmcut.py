@@ -300,8 +300,8 @@ class LMCutHeuristic(Configurable):
             add=[*relaxed.add, (goal_fact,)],
             cost=[*relaxed.cost, 0],
             operator=[*relaxed.operator, AXIOM],
-            pre_mask=[*relaxed.pre_mask, 0],
-            neg_mask=[*relaxed.neg_mask, 0],
+            need=[*relaxed.need, ()],
+            lack=[*relaxed.lack, ()],
             pre_count=[*relaxed.pre_count, len(relaxed.goal)],
             pre_of=pre_of,
         )

@@ -21,7 +21,7 @@ import math
 
 from strips_evaluators.heuristics.causal_order import causal_order
 from strips_evaluators.heuristics.factoring import factor_shared_pairs
-from strips_framework.grounding.task import GroundTask
+from strips_framework.grounding.task import GroundTask, facts_in
 from strips_framework.records import Record
 
 #: ``operator`` entry of a relaxed operator that comes from an axiom.
@@ -41,11 +41,12 @@ class RelaxedTask(Record):
     cost: list[int]
     #: Index into ``task.operators``, or :data:`AXIOM` or :data:`CONJUNCTION` (negative).
     operator: list[int]
-    #: Per relaxed operator, the masks of the facts a state must hold and lack for its
-    #: effect to happen: the operator's preconditions and, for a conditional effect, its
-    #: condition (0 for axioms and conjunctions). Preferred operators are tested with them.
-    pre_mask: list[int]
-    neg_mask: list[int]
+    #: Per relaxed operator, the facts a state must hold and lack for its effect to
+    #: happen: the operator's preconditions and, for a conditional effect, its condition
+    #: (none for axioms and conjunctions). Preferred operators are tested with them.
+    #: Fact tuples rather than masks: a mask costs as much as the task has facts.
+    need: list[tuple[int, ...]]
+    lack: list[tuple[int, ...]]
     #: True when some operator has several relaxed operators (conditional effects).
     shared_costs: bool
     #: Number of preconditions of each relaxed operator: the template of the counters.
@@ -75,8 +76,8 @@ class RelaxedTask(Record):
         "add",
         "cost",
         "operator",
-        "pre_mask",
-        "neg_mask",
+        "need",
+        "lack",
         "shared_costs",
         "pre_count",
         "pre_of",
@@ -96,8 +97,8 @@ class RelaxedTask(Record):
         add: list[tuple[int, ...]],
         cost: list[int],
         operator: list[int],
-        pre_mask: list[int],
-        neg_mask: list[int],
+        need: list[tuple[int, ...]],
+        lack: list[tuple[int, ...]],
         shared_costs: bool,
         pre_count: list[int],
         pre_of: list[list[int]],
@@ -114,8 +115,8 @@ class RelaxedTask(Record):
         self.add = add
         self.cost = cost
         self.operator = operator
-        self.pre_mask = pre_mask
-        self.neg_mask = neg_mask
+        self.need = need
+        self.lack = lack
         self.shared_costs = shared_costs
         self.pre_count = pre_count
         self.pre_of = pre_of
@@ -137,8 +138,8 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
     add: list[tuple[int, ...]] = []
     cost: list[int] = []
     operator: list[int] = []
-    pre_mask: list[int] = []
-    neg_mask: list[int] = []
+    need: list[tuple[int, ...]] = []
+    lack: list[tuple[int, ...]] = []
     true_fact = len(task.facts)
     for index, op in enumerate(task.operators):
         if op.add:
@@ -146,24 +147,24 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
             add.append(_unique(op.add))
             cost.append(op.cost)
             operator.append(index)
-            pre_mask.append(op.pre_mask)
-            neg_mask.append(op.pre_neg_mask)
+            need.append(op.pre)
+            lack.append(op.pre_neg)
         for effect in op.effects:
             if effect.add:
                 pre.append(_unique(op.pre + effect.condition) or (true_fact,))
                 add.append(_unique(effect.add))
                 cost.append(op.cost)
                 operator.append(index)
-                pre_mask.append(op.pre_mask | effect.condition_mask)
-                neg_mask.append(op.pre_neg_mask | effect.condition_neg_mask)
+                need.append(op.pre + effect.condition)
+                lack.append(op.pre_neg + effect.condition_neg)
     shared_costs = len(set(operator)) < len(operator)
     for axiom in task.axioms:
         pre.append(_unique(axiom.body) or (true_fact,))
         add.append((axiom.head,))
         cost.append(0)
         operator.append(AXIOM)
-        pre_mask.append(0)
-        neg_mask.append(0)
+        need.append(())
+        lack.append(())
     num_facts = true_fact + 1 + extra_facts
     if factor_sharing:
         pre, conjunctions = factor_shared_pairs(pre, num_facts, factor_sharing)
@@ -172,8 +173,8 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
         add.extend((node,) for node in range(num_facts - len(conjunctions), num_facts))
         cost.extend(0 for _ in conjunctions)
         operator.extend(CONJUNCTION for _ in conjunctions)
-        pre_mask.extend(0 for _ in conjunctions)
-        neg_mask.extend(0 for _ in conjunctions)
+        need.extend(() for _ in conjunctions)
+        lack.extend(() for _ in conjunctions)
     pre_of: list[list[int]] = [[] for _ in range(num_facts)]
     for op, facts in enumerate(pre):
         for fact in facts:
@@ -193,8 +194,8 @@ def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> Re
         add=add,
         cost=cost,
         operator=operator,
-        pre_mask=pre_mask,
-        neg_mask=neg_mask,
+        need=need,
+        lack=lack,
         shared_costs=shared_costs,
         pre_count=pre_count,
         pre_of=pre_of,
@@ -217,20 +218,6 @@ def start_exploration(relaxed: RelaxedTask, state: int) -> tuple[list[int], list
     for fact in start:
         cost[fact] = 0
     return start, cost
-
-
-def facts_in(state: int) -> list[int]:
-    """The fact numbers set in ``state``, ascending. Scans the binary string with
-    ``str.find``, so the Python-level work is one step per true fact, not per fact.
-    """
-    digits = bin(state)[:1:-1]
-    facts = []
-    find = digits.find
-    position = find("1")
-    while position >= 0:
-        facts.append(position)
-        position = find("1", position + 1)
-    return facts
 
 
 def _unique(facts: tuple[int, ...]) -> tuple[int, ...]:

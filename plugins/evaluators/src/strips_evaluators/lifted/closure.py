@@ -11,7 +11,7 @@ strata or are basic, so they are final when tested.
 from __future__ import annotations
 
 from strips_evaluators.lifted.exploration import Index, join
-from strips_evaluators.lifted.program import Plan, Program
+from strips_evaluators.lifted.program import Plan, RuleProgram
 from strips_framework.errors import InputError
 from strips_framework.lifted.components import GroundAtom
 
@@ -19,7 +19,7 @@ from strips_framework.lifted.components import GroundAtom
 class DerivedClosure:
     """``model(state)``: the state's facts and the derived facts that hold in it."""
 
-    def __init__(self, program: Program) -> None:
+    def __init__(self, program: RuleProgram) -> None:
         self.program = program
         level = dict.fromkeys(program.derived, 0)
         changed = True
@@ -35,7 +35,7 @@ class DerivedClosure:
                         changed = True
                 if level[head] > len(level):
                     raise InputError(
-                        program.task.domain_path, None, None,
+                        program.source, None, None,
                         f"derived predicate {head!r} depends negatively on itself "
                         "(the axioms cannot be stratified)",
                     )

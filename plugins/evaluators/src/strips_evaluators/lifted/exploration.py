@@ -14,10 +14,10 @@ task; the supporter of a fact is the first instance to reach its final cost.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from heapq import heappop, heappush
 
-from strips_evaluators.lifted.program import AXIOM, Plan, Program, Rule, Step, passes
+from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram, Step, passes
 from strips_framework.lifted.components import ActionInstance, GroundAtom
 
 #: A rule instance that achieved a fact: the rule, its fluent body facts, its slots.
@@ -28,7 +28,7 @@ Index = dict[tuple[str, ...], list[GroundAtom]]
 class Exploration:
     """The explorations of one task; :meth:`costs` runs one per state."""
 
-    def __init__(self, program: Program) -> None:
+    def __init__(self, program: RuleProgram) -> None:
         self.program = program
         #: Instances of rules without fluent body atoms, the same in every state:
         #: ``(cost, heads, supporter)``.
@@ -44,10 +44,14 @@ class Exploration:
         )
 
     def costs(
-        self, state: frozenset[GroundAtom], additive: bool
+        self,
+        state: Collection[GroundAtom],
+        additive: bool,
+        until: Collection[GroundAtom] | None = None,
     ) -> tuple[dict[GroundAtom, float], dict[GroundAtom, Supporter]]:
-        """The hadd (``additive``) or hmax costs of the facts reached before every goal
-        fact is settled, and their best supporters (none for the state's facts)."""
+        """The hadd (``additive``) or hmax costs of the facts reached before every fact
+        of ``until`` (by default the goal's) is settled, and their best supporters (none
+        for the state's facts); with an empty ``until``, of every fact reachable."""
         program = self.program
         cost: dict[GroundAtom, float] = {}
         supporter: dict[GroundAtom, Supporter] = {}
@@ -71,22 +75,31 @@ class Exploration:
             for predicate, pairs in indexes.items()
             for positions, index in pairs
         }
-        goal = set(program.fluent_goal)
-        goals_left = len(goal)
-        if not goals_left:
-            return cost, supporter
+        goal = set(program.fluent_goal if until is None else until)
+        if until is None and not goal:
+            return cost, supporter  # nothing to reach
+        goals_left = len(goal) if goal else -1  # -1: never counts down to 0
+
         triggers = program.triggers
+
+        cost_get = cost.get
+        cost_of = program.cost_of
 
         def fire(plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
             rule = plan.rule
-            body = set(matched) if rule.repeated_predicates else matched
-            if additive:
-                value = program.cost_of(rule, slots) + sum([cost[f] for f in body])
-            else:
-                value = program.cost_of(rule, slots) + max([cost[f] for f in body], default=0)
-            for name, terms in rule.heads:
-                head = (name, *[slots[s] for s in terms])
-                if value < cost.get(head, math.inf):
+            value = rule.cost if rule.cost is not None else cost_of(rule, slots)
+            if len(matched) == 1:
+                value += cost[matched[0]]
+            elif matched:
+                body = set(matched) if rule.repeated_predicates else matched
+                if additive:
+                    value += sum([cost[f] for f in body])
+                else:
+                    value += max([cost[f] for f in body])
+            for make in rule.makers:
+                head = make(slots)
+                old = cost_get(head)
+                if old is None or value < old:
                     cost[head] = value
                     supporter[head] = (rule, tuple(matched), tuple(slots))
                     heappush(heap, (value, head))
@@ -112,7 +125,7 @@ class Exploration:
         return cost, supporter
 
 def join(
-    program: Program,
+    program: RuleProgram,
     plan: Plan,
     fact: GroundAtom | None,
     lookup: dict[tuple[str, tuple[int, ...]], Index],
@@ -132,11 +145,22 @@ def join(
     last = len(steps)
     static_indexes = program.static_indexes
 
+    simple = not plan.free and not plan.final_checks
+    probes = plan.probes
+
     def extend(depth: int) -> None:
         if depth == last:
-            for _ in program.instances(plan, slots):
+            if simple:
                 emit(plan, slots, matched)
+            else:
+                for _ in program.instances(plan, slots):
+                    emit(plan, slots, matched)
             return
+        for later in probes[depth]:
+            probe = steps[later]
+            index = lookup.get((probe.predicate, probe.positions))
+            if not index or tuple([slots[s] for s in probe.key]) not in index:
+                return
         step = steps[depth]
         where = (step.predicate, step.positions)
         index = lookup.get(where) if step.fluent else static_indexes[where]
@@ -165,18 +189,20 @@ def _match(step: Step, fact: GroundAtom, slots: list, static: dict) -> bool:
     for position, slot in step.repeats:
         if fact[position] != slots[slot]:
             return False
-    return passes(step.checks, slots, static)
+    return not step.checks or passes(step.checks, slots, static)
 
 
 def relaxed_plan(
-    program: Program,
+    program: RuleProgram,
     cost: dict[GroundAtom, float],
     supporter: dict[GroundAtom, Supporter],
+    goal: Collection[GroundAtom] | None = None,
 ) -> tuple[float, dict[tuple, Supporter]]:
     """hFF: the cost of the relaxed plan the best supporters give, walking back from the
-    goal, and its rule instances by ``(rule number, slots)``; a ground operator used for
-    several of its effects counts once (as in the ground hFF)."""
-    goal = program.fluent_goal
+    goal (by default the task's), and its rule instances by ``(rule number, slots)``; a
+    ground operator used for several of its effects counts once (as in the ground hFF)."""
+    if goal is None:
+        goal = program.fluent_goal
     if program.static_goal_missing or any(fact not in cost for fact in goal):
         return math.inf, {}
     plan: dict[tuple, Supporter] = {}
@@ -198,5 +224,5 @@ def relaxed_plan(
     return sum(operators.values()), plan
 
 
-def action_instance(program: Program, rule: Rule, slots: tuple[str, ...]) -> ActionInstance:
-    return program.task.domain.actions[rule.action].name, slots[: rule.arity]
+def action_instance(program: RuleProgram, rule: Rule, slots: tuple[str, ...]) -> ActionInstance:
+    return program.action_names[rule.action], slots[: rule.arity]

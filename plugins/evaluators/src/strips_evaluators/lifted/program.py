@@ -23,14 +23,15 @@ atom plus one.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterable, Iterator
 from itertools import product
+from operator import itemgetter
 
 from strips_framework.errors import InputError
 from strips_framework.grounding.normalize import Clause, Normalizer
 from strips_framework.lifted.components import GroundAtom, static_predicates
 from strips_framework.pddl.formulas import Atom, Parameter
-from strips_framework.pddl.task import Action, PddlTask, missing_cost
+from strips_framework.pddl.task import Action, PddlTask
 from strips_framework.records import Record
 
 #: The derived atom that stands for a goal which is not a conjunction of atoms (as in
@@ -42,8 +43,8 @@ AXIOM = -1
 
 class Check(Record):
     """A test on a binding, run as soon as its slots are bound: ``kind`` is ``"="``,
-    ``"!="`` (two slots), ``"type"`` (slot ``a`` in ``domain``) or ``"absent"`` (the
-    static fact ``(predicate, *slots)`` does not hold)."""
+    ``"!="`` (two slots), ``"type"`` (slot ``a`` in ``domain``), ``"absent"`` or
+    ``"present"`` (the static fact ``(predicate, *slots)`` does not hold, holds)."""
 
     kind: str
     slots: tuple[int, ...]
@@ -112,7 +113,11 @@ class Plan(Record):
     """How to complete a binding of ``rule``: the ``trigger`` step (None for the plan
     that starts from nothing) binds the new fact, then ``steps`` join the other atoms,
     then the ``free`` slots no atom binds range over their ``domains`` (with
-    ``final_checks``)."""
+    ``final_checks``). ``probes[d]`` lists later fluent steps whose key is bound before
+    step ``d``: if one of them has no fact under its key, no completion exists and step
+    ``d``'s candidates are not enumerated (a semi-join filter: a relaxed exploration
+    settles fluent facts gradually, and a static relation joined before an empty fluent
+    one would be enumerated for nothing)."""
 
     rule: Rule
     trigger: Step | None
@@ -120,8 +125,9 @@ class Plan(Record):
     free: tuple[int, ...]
     domains: tuple[tuple[str, ...], ...]
     final_checks: tuple[Check, ...]
+    probes: tuple[tuple[int, ...], ...]
 
-    __slots__ = ("rule", "trigger", "steps", "free", "domains", "final_checks")
+    __slots__ = ("rule", "trigger", "steps", "free", "domains", "final_checks", "probes")
 
     def __init__(
         self,
@@ -131,6 +137,7 @@ class Plan(Record):
         free: tuple[int, ...],
         domains: tuple[tuple[str, ...], ...],
         final_checks: tuple[Check, ...],
+        probes: tuple[tuple[int, ...], ...],
     ) -> None:
         self.rule = rule
         self.trigger = trigger
@@ -138,6 +145,7 @@ class Plan(Record):
         self.free = free
         self.domains = domains
         self.final_checks = final_checks
+        self.probes = probes
 
 
 class Rule(Record):
@@ -162,10 +170,13 @@ class Rule(Record):
     #: True when two body atoms share a predicate, so an instance may list a fact twice
     #: (the ground relaxation counts a precondition once).
     repeated_predicates: bool
+    #: Per head, a function from the slot list to the ground head (an ``itemgetter``
+    #: over the slots: the head's predicate name is a slot too).
+    makers: tuple[Callable[[list], GroundAtom], ...]
 
     __slots__ = (
         "number", "template", "heads", "negative", "action", "arity", "operator", "identity", "cost",
-        "cost_term", "repeated_predicates",
+        "cost_term", "repeated_predicates", "makers",
     )  # fmt: skip
 
     def __init__(
@@ -181,6 +192,7 @@ class Rule(Record):
         cost: int | None,
         cost_term: tuple[str, tuple[int, ...]],
         repeated_predicates: bool,
+        makers: tuple[Callable[[list], GroundAtom], ...],
     ) -> None:
         self.number = number
         self.template = template
@@ -193,24 +205,38 @@ class Rule(Record):
         self.cost = cost
         self.cost_term = cost_term
         self.repeated_predicates = repeated_predicates
+        self.makers = makers
 
 
-class Program:
-    """The relaxed program of one task (see the module docstring)."""
+class RuleProgram:
+    """Relaxed rules over a set of objects and static facts, compiled to join plans; the
+    front-ends say where the rules come from (:class:`Program` for a PDDL task)."""
 
-    def __init__(self, task: PddlTask) -> None:
-        self.task = task
-        self.static = static_predicates(task)
-        self.derived = {rule.head.predicate for rule in task.domain.derived}
-        self.objects = frozenset(task.objects_of(("object",)))
+    def __init__(
+        self,
+        static: frozenset[str],
+        initial: Iterable[GroundAtom],
+        objects_of: Callable[[tuple[str, ...]], tuple[str, ...]],
+        source: str,
+    ) -> None:
+        self.static = static
+        self.objects_of = objects_of
+        #: The file named in messages about the rules.
+        self.source = source
+        self.derived: set[str] = set()
+        self.objects = frozenset(objects_of(("object",)))
         #: Static facts by predicate, from the initial state.
-        self.static_facts: dict[str, set[GroundAtom]] = {name: set() for name in self.static}
-        for atom in task.problem.init:
-            if atom.predicate in self.static:
-                self.static_facts[atom.predicate].add((atom.predicate, *atom.args))
-        self.numeric = {
-            (term.predicate, *term.args): value for term, value in task.problem.numeric
-        }
+        self.static_facts: dict[str, set[GroundAtom]] = {name: set() for name in static}
+        #: The initial state's fluent facts by predicate (join-order estimates only).
+        self.initial_facts: dict[str, list[GroundAtom]] = {}
+        for fact in initial:
+            if fact[0] in static:
+                self.static_facts[fact[0]].add(fact)
+            else:
+                self.initial_facts.setdefault(fact[0], []).append(fact)
+        self.numeric: dict[GroundAtom, int] = {}
+        #: The names of the actions ``Rule.action`` indexes.
+        self.action_names: list[str] = []
         self.rules: list[Rule] = []
         #: Per fluent (or derived) predicate, the plans it triggers.
         self.triggers: dict[str, list[Plan]] = {}
@@ -222,51 +248,13 @@ class Program:
         #: Index keys ``(predicate, positions)`` the plans look facts up with.
         self.fluent_indexes: dict[str, list[tuple[int, ...]]] = {}
         self.static_indexes: dict[tuple[str, tuple[int, ...]], dict[tuple[str, ...], list]] = {}
-        normalizer = Normalizer(task)
-        for number, action in enumerate(task.domain.actions):
-            for operator, clause in enumerate(normalizer.clauses(action.precondition)):
-                self._add(clause, action.params, action.add, number, operator, action)
-                for effect in action.conditional:
-                    if not effect.add:
-                        continue
-                    for condition in normalizer.clauses(effect.condition):
-                        self._add(
-                            clause.join(Clause(effect.params)).join(condition),
-                            action.params,
-                            effect.add,
-                            number,
-                            operator,
-                            action,
-                            identity=len(action.params) + len(clause.params),
-                        )
-        for derived in task.domain.derived:
-            for clause in normalizer.clauses(derived.body):
-                self._add(clause, derived.params, (derived.head,), AXIOM, 0, None)
-        goal_clauses = normalizer.clauses(task.problem.goal)
-        self.goal: tuple[GroundAtom, ...]
-        if len(goal_clauses) == 1 and not goal_clauses[0].params and not goal_clauses[0].negative:
-            atoms = [atom for atom in goal_clauses[0].positive if atom.predicate != "="]
-            self.goal = tuple(dict.fromkeys((atom.predicate, *atom.args) for atom in atoms))
-        else:
-            self.goal = (GOAL,)
-            for clause in goal_clauses:
-                self._add(clause, (), (Atom(GOAL[0], ()),), AXIOM, 0, None)
-        done = 0
-        while done < len(normalizer.auxiliary):  # their bodies may add more
-            auxiliary = normalizer.auxiliary[done]
-            done += 1
-            self.derived.add(auxiliary.head.predicate)
-            for clause in normalizer.clauses(auxiliary.body):
-                self._add(clause, auxiliary.params, (auxiliary.head,), AXIOM, 0, None)
-        self.derived.add(GOAL[0])
+        #: The goal facts a state can change; explorations stop once all are settled.
+        self.fluent_goal: tuple[GroundAtom, ...] = ()
         #: Goal facts of static predicates that do not hold: no state reaches the goal.
-        self.static_goal_missing = sum(
-            1
-            for fact in self.goal
-            if fact[0] in self.static and fact not in self.static_facts[fact[0]]
-        )
-        #: The goal facts a state can change (fluent or derived ones).
-        self.fluent_goal = tuple(fact for fact in self.goal if fact[0] not in self.static)
+        self.static_goal_missing = 0
+
+    def _index_static_facts(self) -> None:
+        """Fills the static indexes the plans use (once every rule is added)."""
         for (predicate, positions), index in self.static_indexes.items():
             for fact in self.static_facts.get(predicate, ()):
                 index.setdefault(tuple([fact[i] for i in positions]), []).append(fact)
@@ -279,9 +267,14 @@ class Program:
         term = (function, *[slots[i] for i in arguments])
         value = self.numeric.get(term)
         if value is None:
-            action = self.task.domain.actions[rule.action]
-            raise missing_cost(self.task, Atom(function, term[1:]), action)
+            name = self.action_names[rule.action]
+            raise InputError(
+                self.source, None, None,
+                f"no initial value for ({' '.join(term)}), the cost of {name!r}",
+            )
         return value
+
+
 
     def _add(
         self,
@@ -290,23 +283,26 @@ class Program:
         heads: tuple[Atom, ...],
         action: int,
         operator: int,
-        source: Action | None,
+        cost: int | Atom,
+        line: int | None = None,
         identity: int | None = None,
     ) -> None:
+        """A rule for ``clause`` (over ``params`` and its own variables) with these
+        ``heads``, for ``action`` (or :data:`AXIOM`) at ``cost``: a number, or a numeric
+        function term over the rule's variables (``line`` locates it in messages)."""
         everything = params + clause.params
         slot = {param.name: i for i, param in enumerate(everything)}
         mentioned = [arg for atom in (*clause.positive, *clause.negative, *heads) for arg in atom.args]
-        if source is not None and isinstance(source.cost, Atom):
-            mentioned += source.cost.args
+        if isinstance(cost, Atom):
+            mentioned += cost.args
         for term in mentioned:
             if term not in slot:
                 if term.startswith("?"):
-                    raise InputError(
-                        self.task.domain_path, source.line if source else None, None,
-                        f"variable {term} is not a parameter",
-                    )
+                    raise InputError(self.source, line, None, f"variable {term} is not a parameter")
                 slot[term] = len(slot)
-        template = (None,) * len(everything) + tuple(list(slot)[len(everything):])
+        unique = dict.fromkeys(atom.predicate for atom in heads)
+        names = {predicate: i for i, predicate in enumerate(unique, start=len(slot))}
+        template = (None,) * len(everything) + tuple(list(slot)[len(everything):]) + tuple(names)
         body = [atom for atom in clause.positive if atom.predicate != "="]
         checks = [Check("=", (slot[a.args[0]], slot[a.args[1]]))
                   for a in clause.positive if a.predicate == "="]  # fmt: skip
@@ -318,21 +314,12 @@ class Program:
             if a.predicate in self.static
         ]
         for i, param in enumerate(everything):
-            domain = frozenset(self.task.objects_of(param.types))
+            domain = frozenset(self.objects_of(param.types))
             if domain != self.objects:
                 checks.append(Check("type", (i,), domain=domain))
-        cost: int | None = 1
         cost_term: tuple[str, tuple[int, ...]] = ("", ())
-        if source is None:
-            cost = 0
-        elif self.task.problem.minimize_cost:
-            if source.cost is None:
-                cost = 0
-            elif isinstance(source.cost, int):
-                cost = source.cost
-            else:
-                cost = None
-                cost_term = (source.cost.predicate, tuple(slot[a] for a in source.cost.args))
+        if isinstance(cost, Atom):
+            cost_term = (cost.predicate, tuple(slot[a] for a in cost.args))
         predicates = [atom.predicate for atom in body]
         rule = Rule(
             number=len(self.rules),
@@ -347,13 +334,17 @@ class Program:
             arity=len(params) if action != AXIOM else 0,
             operator=operator,
             identity=len(everything) if identity is None else identity,
-            cost=cost,
+            cost=None if isinstance(cost, Atom) else cost,
             cost_term=cost_term,
             repeated_predicates=len(set(predicates)) < len(predicates),
+            makers=tuple(
+                _maker(a.predicate, names[a.predicate], tuple(slot[arg] for arg in a.args))
+                for a in heads
+            ),
         )
         self.rules.append(rule)
         atoms = [(a.predicate, tuple(slot[arg] for arg in a.args)) for a in body]
-        domains = {i: self.task.objects_of(p.types) for i, p in enumerate(everything)}
+        domains = {i: self.objects_of(p.types) for i, p in enumerate(everything)}
         fluent = [i for i, (predicate, _) in enumerate(atoms) if predicate not in self.static]
         if action == AXIOM:
             self.derivations.append(self._plan(rule, atoms, None, checks, domains, len(everything)))
@@ -372,28 +363,61 @@ class Program:
         domains: dict[int, tuple[str, ...]],
         variables: int,
     ) -> Plan:
-        """The join order: the trigger first, then greedily the atom with most bound
-        arguments (static ones first among equals: they filter without growing)."""
+        """The join order: the trigger first, then greedily the atom with the fewest
+        expected candidates: none for an atom whose arguments are all bound (a test),
+        else the average bucket size of its index over the static facts for a static
+        atom. Which facts of a fluent atom a state settles is not known up front: its
+        bucket size lies between that over the initial state's facts and the product of
+        its unbound variables' domain sizes (what exploration may reach), and their
+        geometric mean is the estimate. Static atoms go first among equals: they filter
+        without growing."""
         bound = set(range(variables, len(rule.template)))  # constants
         pending = list(checks)
         first = None
         if trigger is not None:
             first = self._step(atoms[trigger], bound, pending, fluent=True, before=False, trigger=True)
         rest = [i for i in range(len(atoms)) if i != trigger]
-        steps = []
+        steps: list[Step] = []
+        bound_before: list[set[int]] = []
         while rest:
-            def score(i: int) -> tuple[int, int, int]:
+            def expected(i: int) -> tuple[float, bool]:
                 predicate, terms = atoms[i]
-                known = sum(1 for t in terms if t in bound)
-                return (known == len(terms), known, predicate in self.static)
+                positions = tuple(p for p, t in enumerate(terms, start=1) if t in bound)
+                if len(positions) == len(terms):
+                    return 0, predicate not in self.static
+                if predicate in self.static:
+                    return self._bucket_size(predicate, positions), False
+                reachable = 1.0
+                for slot in {t for t in terms if t not in bound}:
+                    reachable *= len(domains[slot])
+                initial = max(self._bucket_size(predicate, positions), 1.0)
+                return (initial * reachable) ** 0.5, True
 
-            best = max(rest, key=score)
+            best = min(rest, key=expected)
             rest.remove(best)
-            predicate = atoms[best][0]
+            predicate, terms = atoms[best]
             is_fluent = predicate not in self.static
+            previous = steps[-1] if steps else first
+            if not is_fluent and previous is not None and all(t in bound for t in terms):
+                # A static atom with every argument bound is a membership test, run with
+                # the previous step's tests rather than as a join level of its own.
+                previous.checks += (Check("present", terms, predicate),)
+                continue
             before = trigger is not None and is_fluent and best < trigger
+            bound_before.append(set(bound))
             steps.append(self._step(atoms[best], bound, pending, is_fluent, before))
         free = tuple(i for i in range(variables) if i not in bound)
+        probes: list[tuple[int, ...]] = []
+        probed: set[int] = set()
+        for depth, known in enumerate(bound_before):
+            ready = [
+                later
+                for later in range(depth + 1, len(steps))
+                if steps[later].fluent and later not in probed
+                and all(slot in known for slot in steps[later].key)
+            ]
+            probed.update(ready)
+            probes.append(tuple(ready))
         return Plan(
             rule=rule,
             trigger=first,
@@ -401,7 +425,15 @@ class Program:
             free=free,
             domains=tuple(domains[i] for i in free),
             final_checks=tuple(pending),
+            probes=tuple(probes),
         )
+
+    def _bucket_size(self, predicate: str, positions: tuple[int, ...]) -> float:
+        """The average number of static (or initial) facts of ``predicate`` per value of
+        the arguments at ``positions``."""
+        facts = self.static_facts.get(predicate) or self.initial_facts.get(predicate, ())
+        keys = {tuple([fact[i] for i in positions]) for fact in facts}
+        return len(facts) / max(len(keys), 1)
 
     def _step(
         self,
@@ -462,6 +494,78 @@ class Program:
                 yield None
 
 
+class Program(RuleProgram):
+    """The relaxed program of a PDDL task (see the module docstring)."""
+
+    def __init__(self, task: PddlTask) -> None:
+        initial = [(atom.predicate, *atom.args) for atom in task.problem.init]
+        super().__init__(static_predicates(task), initial, task.objects_of, task.problem_path)
+        self.task = task
+        self.action_names = [action.name for action in task.domain.actions]
+        self.derived = {rule.head.predicate for rule in task.domain.derived}
+        self.numeric = {
+            (term.predicate, *term.args): value for term, value in task.problem.numeric
+        }
+        normalizer = Normalizer(task)
+        for number, action in enumerate(task.domain.actions):
+            for operator, clause in enumerate(normalizer.clauses(action.precondition)):
+                cost = self._action_cost(action)
+                self._add(clause, action.params, action.add, number, operator, cost, action.line)
+                for effect in action.conditional:
+                    if not effect.add:
+                        continue
+                    for condition in normalizer.clauses(effect.condition):
+                        self._add(
+                            clause.join(Clause(effect.params)).join(condition),
+                            action.params,
+                            effect.add,
+                            number,
+                            operator,
+                            cost,
+                            action.line,
+                            identity=len(action.params) + len(clause.params),
+                        )
+        for derived in task.domain.derived:
+            for clause in normalizer.clauses(derived.body):
+                self._add(clause, derived.params, (derived.head,), AXIOM, 0, 0)
+        goal_clauses = normalizer.clauses(task.problem.goal)
+        self.goal: tuple[GroundAtom, ...]
+        if len(goal_clauses) == 1 and not goal_clauses[0].params and not goal_clauses[0].negative:
+            atoms = [atom for atom in goal_clauses[0].positive if atom.predicate != "="]
+            self.goal = tuple(dict.fromkeys((atom.predicate, *atom.args) for atom in atoms))
+        else:
+            self.goal = (GOAL,)
+            for clause in goal_clauses:
+                self._add(clause, (), (Atom(GOAL[0], ()),), AXIOM, 0, 0)
+        done = 0
+        while done < len(normalizer.auxiliary):  # their bodies may add more
+            auxiliary = normalizer.auxiliary[done]
+            done += 1
+            self.derived.add(auxiliary.head.predicate)
+            for clause in normalizer.clauses(auxiliary.body):
+                self._add(clause, auxiliary.params, (auxiliary.head,), AXIOM, 0, 0)
+        self.derived.add(GOAL[0])
+        self.static_goal_missing = sum(
+            1
+            for fact in self.goal
+            if fact[0] in self.static and fact not in self.static_facts[fact[0]]
+        )
+        self.fluent_goal = tuple(fact for fact in self.goal if fact[0] not in self.static)
+        self._index_static_facts()
+
+    def _action_cost(self, action: Action) -> int | Atom:
+        """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
+        if not self.task.problem.minimize_cost:
+            return 1
+        return 0 if action.cost is None else action.cost
+
+def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list], GroundAtom]:
+    if not terms:
+        atom = (name,)
+        return lambda slots: atom
+    return itemgetter(name_slot, *terms)
+
+
 def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[GroundAtom]]) -> bool:
     for check in checks:
         kind = check.kind
@@ -474,6 +578,8 @@ def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[Gr
         elif kind == "=":
             if slots[check.slots[0]] != slots[check.slots[1]]:
                 return False
-        elif (check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]:
+        elif ((check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]) != (
+            kind == "present"
+        ):
             return False
     return True
