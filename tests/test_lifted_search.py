@@ -247,3 +247,59 @@ def test_join_prover_answers_like_resolution_on_random_horn_models() -> None:
         assert set(found.answers) == set(expected.answers), seed
         proved += found.proved
     assert proved >= 10  # not a test of empty answers only
+
+
+def _blocks(count: int, goal: str) -> str:
+    names = " ".join(f"b{i}" for i in range(count))
+    init = " ".join(f"(ontable b{i}) (clear b{i})" for i in range(count))
+    return f"""(define (problem blocks{count}) (:domain blocksworld) (:objects {names} - block)
+ (:init (handempty) {init}) (:goal {goal}))"""
+
+
+@pytest.mark.parametrize(
+    ("cheap", "chosen", "why"),
+    [(10**6, "lazy-gbfs", "grounding looks cheap"), (50, "lifted-gbfs", "grounding looks expensive")],
+)
+def test_default_strategy_grounds_only_cheap_tasks_and_says_why(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
+    cheap: int, chosen: str, why: str,
+) -> None:
+    """Ten blocks make 220 operators: ground under a limit of a million, lifted
+    under one of 50 (the real limit is 250,000; a task that large would be slow here)."""
+    from strips_framework.cli.main import main
+    from strips_framework.lifted import estimate
+
+    monkeypatch.setattr(estimate, "CHEAP_GROUNDING", cheap)
+    problem = tmp_path / "problem.pddl"
+    problem.write_text(_blocks(10, "(and (on b1 b0))"))
+    domain = EXAMPLES / "blocksworld" / "domain.pddl"
+    assert main(["solve", str(domain), str(problem), "--json"]) == 0
+    captured = capsys.readouterr()
+    assert f"strips: strategy {chosen}: {why} (about 220 operators estimated" in captured.err
+    import json
+
+    document = json.loads(captured.out)
+    assert document["family"] == ("lifted" if chosen == "lifted-gbfs" else "forward")
+    assert document["plan"] == ["(pick-up b1)", "(stack b1 b0)"]
+
+
+def test_the_estimate_sends_a_thousand_blocks_to_the_lifted_search() -> None:
+    from strips_framework.lifted.estimate import CHEAP_GROUNDING, estimated_operators
+
+    domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
+    small = LiftedTask(parse_task(domain, _blocks(100, "(and (on b1 b0))")))
+    large = LiftedTask(parse_task(domain, _blocks(1000, "(and (on b1 b0))")))
+    assert estimated_operators(small) == 2 * 100 * 100 + 2 * 100  # stack, unstack; pick, put
+    assert estimated_operators(small) <= CHEAP_GROUNDING < estimated_operators(large)
+
+
+def test_a_chosen_strategy_is_not_second_guessed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from strips_framework.cli.main import main
+
+    problem = tmp_path / "problem.pddl"
+    problem.write_text(_blocks(4, "(and (on b1 b0))"))
+    config = tmp_path / "strips.toml"
+    config.write_text('[strategy]\nname = "lifted-gbfs"\n')
+    domain = EXAMPLES / "blocksworld" / "domain.pddl"
+    assert main(["solve", str(domain), str(problem), "--config", str(config)]) == 0
+    assert "strategy" not in capsys.readouterr().err

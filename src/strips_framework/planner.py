@@ -202,7 +202,7 @@ class Planner(Record):
         else:
             name = PDDL_LIFTED_STRATEGY
             why = (
-                f"grounding looks expensive (about {estimate:.2g} operators estimated, more "
+                f"grounding looks expensive (about {estimate:,.0f} operators estimated, more "
                 f"than {CHEAP_GROUNDING:,}): searching without grounding"
             )
         choices = {**self.config.choices, "strategy": Choice("strategy", name)}
