@@ -303,3 +303,33 @@ def test_a_chosen_strategy_is_not_second_guessed(tmp_path: Path, capsys: pytest.
     domain = EXAMPLES / "blocksworld" / "domain.pddl"
     assert main(["solve", str(domain), str(problem), "--config", str(config)]) == 0
     assert "strategy" not in capsys.readouterr().err
+
+
+CHAIN = """(define (domain chain) (:requirements :strips :derived-predicates)
+ (:predicates (at ?x) (link ?x ?y) (reach ?x) (visited ?x))
+ (:derived (reach ?x) (at ?x))
+ (:derived (reach ?y) (exists (?x) (and (reach ?x) (link ?x ?y))))
+ (:action move :parameters (?a ?b) :precondition (and (at ?a) (link ?a ?b))
+  :effect (and (not (at ?a)) (at ?b) (visited ?b))))"""
+
+
+def _chain(count: int) -> str:
+    rooms = " ".join(f"r{i}" for i in range(count))
+    links = " ".join(f"(link r{i} r{i + 1})" for i in range(count - 1))
+    return f"""(define (problem chain{count}) (:domain chain) (:objects {rooms})
+ (:init (at r0) {links}) (:goal (visited r{count - 1})))"""
+
+
+def test_recursive_derived_predicates_reach_their_fixpoint() -> None:
+    task = LiftedTask(parse_task(CHAIN, _chain(6)))
+    successors = Successors(task)
+    facts = successors.facts(task.init)
+    assert {atom for atom in facts.atoms if atom[0] == "reach"} == {("reach", f"r{i}") for i in range(6)}
+
+
+def test_the_estimate_counts_static_atoms_not_object_pairs() -> None:
+    from strips_framework.lifted.estimate import estimated_operators
+
+    task = LiftedTask(parse_task(CHAIN, _chain(50)))
+    # move(?a, ?b) has one instance per link (49), not one per pair of objects (2,500).
+    assert estimated_operators(task) == 49
