@@ -333,3 +333,20 @@ def test_the_estimate_counts_static_atoms_not_object_pairs() -> None:
     task = LiftedTask(parse_task(CHAIN, _chain(50)))
     # move(?a, ?b) has one instance per link (49), not one per pair of objects (2,500).
     assert estimated_operators(task) == 49
+
+
+class _Constant:
+    def estimate(self, state: frozenset) -> float:
+        return 1.0
+
+    def estimate_with_preferred(self, state: frozenset) -> tuple[float, tuple]:
+        return 1.0, ()
+
+
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+def test_each_reachable_state_is_stored_once_and_exhausting_them_proves_unsolvable(strategy: type) -> None:
+    domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
+    successors = Successors(LiftedTask(parse_task(domain, _blocks(4, "(and (on b0 b0))"))))
+    result = strategy().search_task(successors, _Constant(), Limits(time=30))
+    assert result.status == Status.UNSOLVABLE
+    assert result.statistics.states == len(_reachable(successors, 10**6)) == 125
