@@ -20,6 +20,7 @@ class LiftedGoalCount:
 
     name: ClassVar[str] = "goal-count"
     admissible: ClassVar[bool] = False
+    capabilities: ClassVar[frozenset[str]] = frozenset()
 
     def for_task(self, task: PddlTask) -> _GoalCountEstimator:
         return _GoalCountEstimator(LiftedTask(task))

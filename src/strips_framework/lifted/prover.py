@@ -88,8 +88,9 @@ class ProverEngine(JoinEngine):
 
 
 class JoinProver(Configurable):
-    """The join engine as a prover of definite Horn tasks (module docstring); it has no
-    options (it needs no effort bound: a Datalog model is finite)."""
+    """The join engine as a prover: every answer, from a definite Horn task's least model.
+
+    No options: it needs no effort bound, since such a model is finite (module docstring)."""
 
     name: ClassVar[str] = "joins"
     capabilities: ClassVar[frozenset[str]] = frozenset(
