@@ -55,7 +55,9 @@ def _lifted_moves(successors: Successors, state: frozenset) -> set[tuple[str, fr
     """(step, successor's atoms, cost) of every applicable instance that changes the state."""
     facts = successors.facts(state)
     moves = set()
-    for step in successors.applicable(facts):
+    steps = successors.applicable(facts)
+    assert len(steps) == len(set(steps)), "an instance found twice"
+    for step in steps:
         child, cost = successors.apply(state, facts, step)
         if child != state:
             moves.add((step_name(step), frozenset(map(_name, child)), cost))
@@ -93,7 +95,7 @@ def test_yannakakis_and_greedy_joins_agree(seed: int) -> None:
     full = Successors(task, JoinEngine(task.objects))
     greedy = Successors(task, JoinEngine(task.objects, yannakakis=False))
     for state in _reachable(full, 20):
-        assert list(full.applicable(full.facts(state))) == list(greedy.applicable(greedy.facts(state)))
+        assert sorted(full.applicable(full.facts(state))) == sorted(greedy.applicable(greedy.facts(state)))
 
 
 def _resolution():  # noqa: ANN202
@@ -109,7 +111,7 @@ def test_resolution_prover_as_the_engine_finds_the_same_instances(seed: int) -> 
     joins = Successors(task)
     prover = Successors(task, ProverEngine(_resolution(), task.objects))
     for state in _reachable(joins, 6):
-        assert list(prover.applicable(prover.facts(state))) == list(joins.applicable(joins.facts(state)))
+        assert sorted(prover.applicable(prover.facts(state))) == sorted(joins.applicable(joins.facts(state)))
         assert _lifted_moves(prover, state) == _lifted_moves(joins, state)
 
 
@@ -350,3 +352,25 @@ def test_each_reachable_state_is_stored_once_and_exhausting_them_proves_unsolvab
     result = strategy().search_task(successors, _Constant(), Limits(time=30))
     assert result.status == Status.UNSOLVABLE
     assert result.statistics.states == len(_reachable(successors, 10**6)) == 125
+
+
+def test_the_search_does_not_depend_on_hash_order(tmp_path: Path) -> None:
+    """Two processes with different string hashes expand the same states in the same
+    order (facts are filed sorted; no answer order comes from a set)."""
+    import os
+    import subprocess
+
+    problem = tmp_path / "problem.pddl"
+    problem.write_text(_blocks(7, "(and (on b1 b0) (on b2 b1) (on b6 b3))"))
+    config = tmp_path / "strips.toml"
+    config.write_text('[strategy]\nname = "lifted-gbfs"\n[heuristic]\nname = "goal-count"\n')
+    domain = EXAMPLES / "blocksworld" / "domain.pddl"
+    outputs = []
+    for seed in ("1", "2"):
+        done = subprocess.run(
+            [sys.executable, "-m", "strips_framework.cli", "solve", str(domain), str(problem),
+             "--config", str(config)],
+            capture_output=True, text=True, env={**os.environ, "PYTHONHASHSEED": seed}, check=True,
+        )
+        outputs.append([line for line in done.stdout.splitlines() if "time" not in line and "seconds" not in line and "phases" not in line and "memory" not in line])
+    assert outputs[0] == outputs[1]

@@ -7,8 +7,9 @@ predicate that match its objects, its repeated variables and its variables' type
 projected on its variables. The relations of static predicates are built once per task;
 those of the state's predicates once per state and shared by every query that asks the
 same atom pattern. The query's answers are the join of the relations, filtered by its
-negated atoms and inequalities as soon as their variables are bound, projected on the
-answer variables and sorted (so the search never depends on hash order).
+negated atoms and inequalities as soon as their variables are bound, and projected on the
+answer variables. Facts are filed in sorted order, so no answer's order, and so no
+search, depends on hash order.
 
 An acyclic query (a join tree exists, found by GYO reduction) is answered the Yannakakis
 way: semi-joins up and down the tree first remove every tuple that takes part in no
@@ -83,7 +84,7 @@ class FactBase:
         self.atoms: set[GroundAtom] = set(atoms)
         # Filed by predicate and arity (a prover's task may use a name at two arities).
         by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
-        for atom in self.atoms:
+        for atom in sorted(self.atoms):  # so that no answer's order depends on hashing
             key = (atom[0], len(atom))
             found = by_predicate.get(key)
             if found is None:
@@ -102,7 +103,7 @@ class FactBase:
 
     def add(self, atoms: Iterable[GroundAtom]) -> list[GroundAtom]:
         """Add (derived) atoms; the new ones, whose predicates' relations are rebuilt."""
-        new = [atom for atom in atoms if atom not in self.atoms]
+        new = sorted({atom for atom in atoms if atom not in self.atoms})
         if new:
             self.atoms.update(new)
             touched = set()
@@ -178,7 +179,8 @@ class QueryEngine(Protocol):
 
     def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
         """Every binding of ``query.variables`` under which the query holds in
-        ``facts`` (extending ``seed``, whose variables are already bound), sorted."""
+        ``facts`` (extending ``seed``, whose variables are already bound), each once,
+        in an order that does not depend on hashing."""
         ...
 
 
@@ -384,7 +386,10 @@ def _term_getter(term: str, columns: list[str]):  # noqa: ANN202
 
 
 def _project(columns: list[str], rows: list[Row], query: Query) -> list[Row]:
-    """The rows as bindings of the answer variables, each once, sorted."""
+    """The rows as bindings of the answer variables, each once. The rows are distinct
+    already (every relation's are, and so are their joins'); only a projection that
+    drops a column can repeat one. Their order is the fact base's filing order, which
+    does not depend on hashing."""
     if not rows:
         return []
     picks = []
@@ -401,14 +406,6 @@ def _project(columns: list[str], rows: list[Row], query: Query) -> list[Row]:
             answers = [get(row) for row in rows] if len(picks) > 1 else [(row[picks[0]],) for row in rows]  # type: ignore[index]
     else:
         answers = [tuple(row[p] if isinstance(p, int) else p for p in picks) for row in rows]
-    return sorted(set(answers))
-
-
-def all_answers(engine: QueryEngine, queries: Sequence[Query], facts: FactBase) -> list[Row]:
-    """The answers of a disjunction of queries (over the same variables), each once."""
-    if len(queries) == 1:
-        return engine.answers(queries[0], facts)
-    found: set[Row] = set()
-    for query in queries:
-        found.update(engine.answers(query, facts))
-    return sorted(found)
+    if len({p for p in picks if isinstance(p, int)}) < len(columns):
+        return list(dict.fromkeys(answers))
+    return answers

@@ -10,8 +10,6 @@ atoms sit under it once for the whole search.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
 from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedState
 from strips_framework.lifted.query import FactBase, JoinEngine, QueryEngine
 from strips_framework.lifted.task import ActionSchema, LiftedTask, Rule
@@ -60,21 +58,21 @@ class Successors:
         answers = self.engine.answers
         return any(answers(query, facts) for query in self.task.goal)
 
-    def applicable(self, facts: FactBase) -> Iterator[ActionInstance]:
+    def applicable(self, facts: FactBase) -> list[ActionInstance]:
         """The instances of every action whose precondition holds, in the order of the
-        domain's actions, each action's sorted by arguments."""
+        domain's actions."""
         answers = self.engine.answers
+        found: list[ActionInstance] = []
         for schema in self.task.actions:
-            queries = schema.precondition
+            queries, name = schema.precondition, schema.name
             if len(queries) == 1:
-                for args in answers(queries[0], facts):
-                    yield schema.name, args
+                found += [(name, args) for args in answers(queries[0], facts)]
             elif queries:
-                found: set[tuple[str, ...]] = set()
+                every: dict[tuple[str, ...], None] = {}
                 for query in queries:
-                    found.update(answers(query, facts))
-                for args in sorted(found):
-                    yield schema.name, args
+                    every.update(dict.fromkeys(answers(query, facts)))
+                found += [(name, args) for args in every]
+        return found
 
     def apply(
         self, state: LiftedState, facts: FactBase | None, instance: ActionInstance
