@@ -58,15 +58,18 @@ class LiftedRun:
     def remember(self, number: int, state: LiftedState, facts: FactBase) -> None:
         self._parent = (number, state, facts)
 
-    def child(self, parent: int, step: ActionInstance) -> tuple[LiftedState, int]:
-        """The state ``step`` leads to from state ``parent``, and its path cost."""
+    def child(self, parent: int, step: ActionInstance) -> tuple[LiftedState, bytes, int]:
+        """The state ``step`` leads to from state ``parent``, packed, and its path cost.
+        The packing is the parent's with the few changed atoms' numbers taken out and put
+        in, not the whole state's numbers looked up again."""
         state, facts = self.parent(parent)
         successors = self.successors
         if facts is None and successors.schema(step[0]).effects:
             facts = successors.facts(state)
             self._parent = (parent, state, facts)
-        child, cost = successors.apply(state, facts, step)
-        return child, self.space.g[parent] + cost
+        removed, added, cost = successors.change(state, facts, step)
+        packed = self.space.repack(self.space.packed[parent], removed, added)
+        return (state - removed) | added, packed, self.space.g[parent] + cost
 
 
 class LiftedStrategy(Configurable):
@@ -172,8 +175,7 @@ class LiftedLazyGreedySearch(LiftedStrategy):
                 if not frontier:
                     return None
                 parent, step = frontier.pop()
-                state, g = run.child(parent, step)
-                packed = space.pack(state)
+                state, packed, g = run.child(parent, step)
                 if packed not in space.ids:
                     number = space.add(packed, parent, step, g)
                     break
@@ -235,8 +237,7 @@ class LiftedBFWS(LiftedStrategy):
             for step in successors.applicable(facts):
                 budget.check(run.expanded)  # each child is evaluated: a slow h adds up
                 run.generated += 1
-                child, g = run.child(number, step)
-                packed = space.pack(child)
+                child, packed, g = run.child(number, step)
                 if packed in space.ids:
                     continue
                 child_number = space.add(packed, number, step, g)

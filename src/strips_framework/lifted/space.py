@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import sys
 from array import array
+from bisect import bisect_left, insort
+from collections.abc import Iterable
 
 from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedState
 
@@ -50,6 +52,19 @@ class LiftedStateSpace:
             keys = [self._number(atom) for atom in state]
         keys.sort()
         return array("I", keys).tobytes()
+
+    def repack(self, packed: bytes, removed: Iterable[GroundAtom], added: Iterable[GroundAtom]) -> bytes:
+        """The packing of a state that differs from the one ``packed`` by ``removed``
+        (atoms it holds) and ``added`` (atoms it lacks): the same as :meth:`pack` of
+        that state, in time linear in the changes plus one copy of the bytes."""
+        keys = array("I")
+        keys.frombytes(packed)
+        numbers = self._numbers
+        for atom in removed:
+            del keys[bisect_left(keys, numbers[atom])]
+        for atom in added:
+            insort(keys, self._number(atom))
+        return keys.tobytes()
 
     def _number(self, atom: GroundAtom) -> int:
         found = self._numbers.get(atom)

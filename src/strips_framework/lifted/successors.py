@@ -80,6 +80,14 @@ class Successors:
         """The state after ``instance`` (applicable in ``state``, whose fact base is
         ``facts``, made here when None and needed) and the instance's cost. Every
         condition is read in ``state``; deletes apply before adds."""
+        removed, added, cost = self.change(state, facts, instance)
+        return (state - removed) | added, cost
+
+    def change(
+        self, state: LiftedState, facts: FactBase | None, instance: ActionInstance
+    ) -> tuple[set[GroundAtom], set[GroundAtom], int]:
+        """What ``instance`` changes in ``state``: the atoms it makes false and those it
+        makes true (each really changing), and its cost (see :meth:`apply`)."""
         schema = self.schemas[instance[0]]
         if schema.effects and facts is None:
             facts = self.facts(state)
@@ -90,11 +98,9 @@ class Successors:
             for extra in self._effect_bindings(effect.params, effect.condition, binding, facts):
                 delete.update(instantiate(atom, extra) for atom in effect.delete)
                 add.update(instantiate(atom, extra) for atom in effect.add)
-        if delete:
-            successor = (state - delete) | add if add else state - delete
-        else:
-            successor = state | add
-        return successor, self.task.cost(schema, binding)
+        removed = {atom for atom in delete if atom in state and atom not in add}
+        added = {atom for atom in add if atom not in state}
+        return removed, added, self.task.cost(schema, binding)
 
     def _effect_bindings(
         self, params: tuple[str, ...], condition: tuple, binding: dict[str, str], facts: FactBase
