@@ -74,8 +74,8 @@ VOCABULARY: dict[str, dict[str, str]] = {
     },
     "lifted-heuristic": {
         ADMISSIBLE: "the estimate never exceeds the cost of an optimal plan from the state",
-        PREFERRED_OPERATORS: "estimate_with_preferred names action instances applicable "
-        "in the state that lead towards the goal (heuristics without it name none)",
+        PREFERRED_OPERATORS: "estimate_with_preferred names action instances applicable in "
+        "the state that lead towards the goal (heuristics without it name none)",
     },
     "lifted-strategy": {},
     "strategy": {
@@ -129,7 +129,7 @@ def declared(cls: type, kind: str) -> frozenset[str] | None:
     capabilities = getattr(cls, "capabilities", None)
     admissible = getattr(cls, "admissible", None)
     if capabilities is None:
-        if kind in ("evaluator", "heuristic") and isinstance(admissible, bool):
+        if kind in ("evaluator", "heuristic", "lifted-heuristic") and isinstance(admissible, bool):
             return frozenset({ADMISSIBLE}) if admissible else frozenset()
         return None
     if not isinstance(capabilities, (frozenset, set)) or not all(

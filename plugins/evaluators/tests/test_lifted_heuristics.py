@@ -153,3 +153,32 @@ def test_random_tasks(seed):
 def test_ipc_first_tasks(domain):
     problem = IPC / domain / "task01.pddl"
     compare(load_task(find_domain(problem), problem), limit=25)
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_each_rule_instance_is_found_once(seed, monkeypatch):
+    """Semi-naive evaluation: an instance is joined when its last body fact is settled
+    and from its first atom that fact matches, never twice (the values would not show
+    it, the time would)."""
+    import strips_evaluators.lifted.exploration as exploration
+
+    found: list[tuple] = []
+    join = exploration.join
+
+    def recording(program, plan, fact, lookup, emit):
+        def record(plan, slots, matched):
+            found.append((plan.rule.number, tuple(slots)))
+            emit(plan, slots, matched)
+
+        join(program, plan, fact, lookup, record)
+
+    monkeypatch.setattr(exploration, "join", recording)
+    task = random_pddl_task(seed)
+    program = Program(task)
+    explorer = Exploration(program)
+    grounded = ground(task, prune_irrelevant=False)
+    changed = {atom.predicate for action in task.domain.actions for atom in action.changed_atoms()}
+    for state in reachable(grounded, 10):
+        found.clear()
+        explorer.costs(lifted_state(grounded, state, changed), additive=True, until=())
+        assert len(found) == len(set(found))

@@ -4,10 +4,21 @@ its relaxation grounded and explored lifted (every test runs with both)."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
-from strips_evaluators.relaxed_plan import RelaxedPlanEvaluator
+from strips_evaluators import relaxed_plan
+from strips_evaluators.relaxed_plan import (
+    RelaxedPlanEvaluator,
+    _LiftedRelaxedTask,
+    _positive_atoms,
+    _RelaxedTask,
+)
+from strips_framework.logic.cnf import SkolemNames
+from strips_framework.logic.terms import is_ground
+from strips_framework.pddl import load_task, to_problem
+from strips_framework.worldmodel.world import initial_model
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
 from strips_framework.logic.terms import Param
@@ -167,3 +178,66 @@ def test_one_scorer_gives_each_model_its_own_costs() -> None:
         for goals in ((top,), (Goal(go_bc.precondition(), go_bc), top))
     ]
     assert scores == [2, 2, 1, 1] * 2
+
+
+LOCAL_PDDL = Path(__file__).parents[3] / "tests" / "pddl" / "data"
+IPC = Path(__file__).parents[4] / "shared" / "bench" / "ipc"
+TRANSLATABLE = ["blocks-3", "rooms-1", "crates-3", "lamps-1"]
+IPC_TASKS = ["logistics/task01", "gripper/task01", "depot/task01", "rovers/task01"]
+
+
+def _translated(name: str) -> tuple[Path, Path]:
+    if "/" in name:
+        if not IPC.is_dir():
+            pytest.skip("the shared IPC benchmarks are not available")
+        return IPC / name.split("/")[0] / "domain.pddl", IPC / f"{name}.pddl"
+    return LOCAL_PDDL / (name.rsplit("-", 1)[0] + "-domain.pddl"), LOCAL_PDDL / f"{name}.pddl"
+
+
+@pytest.mark.parametrize("name", TRANSLATABLE + IPC_TASKS)
+def test_the_lifted_relaxation_reaches_the_ground_ones_costs(name: str) -> None:
+    """On translated PDDL tasks (type atoms, complement predicates, equalities), the
+    relaxation explored lifted gives every fact the hadd cost the ground one gives, from
+    M0 and from the models one step away."""
+    problem = to_problem(load_task(*_translated(name)))
+    initial = initial_model(problem, SkolemNames())
+    ground = _RelaxedTask.ground(problem.operators, initial)
+    lifted = _LiftedRelaxedTask(problem.operators, initial)
+    assert ground is not None
+    atom_of = {number: atom for atom, number in ground.fact_ids.items()}
+    models = [WorldModel(initial)]
+    for schema in problem.operators:
+        for binding in ground.index.bindings(_positive_atoms(schema.precondition), []):
+            instance = OperatorInstance(schema, [(p, binding[p]) for p in schema.parameters if p in binding])
+            deleted, added = instance.effects()
+            if all(is_ground(atom) for atom in (*deleted, *added)):
+                models.append(models[0].changed(frozenset(deleted), frozenset(added)))
+                break
+    for model in models:
+        ground_cost = {atom_of[fact]: value for fact, value in ground._hadd(model)[0].items()}
+        lifted_cost = lifted._hadd(model)[0]
+        assert ground_cost == {atom: lifted_cost[atom] for atom in ground_cost}
+        assert set(lifted_cost) - set(ground_cost) <= {a for a in model.facts()}
+
+
+def test_auto_explores_lifted_once_grounding_passes_its_limit(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(relaxed_plan, "GROUND_INSTANCES", 1)
+    scorer = RelaxedPlanEvaluator(relaxation="auto").for_problem([GO], M0.initial)
+    assert isinstance(scorer.task, _LiftedRelaxedTask)
+    assert _score(_node(_goal(("AT", "C"))), relaxation="auto") == 2
+    monkeypatch.setattr(relaxed_plan, "GROUND_INSTANCES", 1000)
+    scorer = RelaxedPlanEvaluator(relaxation="auto").for_problem([GO], M0.initial)
+    assert not isinstance(scorer.task, _LiftedRelaxedTask)
+
+
+def test_an_inequality_in_a_precondition_is_kept() -> None:
+    """mark(x, y) needs x != y: with only LINK(A, A), MARK(A) is out of reach."""
+    mark = OperatorSchema(
+        "mark", [X, Y], And([Atomic(("AT", X)), Atomic(("LINK", X, Y)), Not(Atomic(("=", X, Y)))]),
+        [("MARK", Y)], [],
+    )  # fmt: skip
+    model = _model([("AT", "A"), ("LINK", "A", "A"), ("LINK", "A", "B")])
+    evaluator = RelaxedPlanEvaluator(relaxation=RELAXATION)
+    scorer = evaluator_for_problem(evaluator, [mark], model.initial)
+    assert scorer.evaluate(_node(_goal(("MARK", "A")), model=model)) == math.inf
+    assert scorer.evaluate(_node(_goal(("MARK", "B")), model=model)) == 1
