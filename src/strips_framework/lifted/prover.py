@@ -19,10 +19,17 @@ is how the resolution prover serves the same search, slowly.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from itertools import product
+from itertools import combinations, product
 from typing import ClassVar
 
-from strips_framework.capabilities import ALL_ANSWERS, ANSWERS, COMPLETE, DEFINITE_HORN, SOUND
+from strips_framework.capabilities import (
+    ALL_ANSWERS,
+    ANSWERS,
+    COMPLETE,
+    DEFINITE_HORN,
+    SOUND,
+    UNCOMPLETED_PROOF,
+)
 from strips_framework.lifted.query import FactBase, JoinEngine, QueryEngine, Relation, Row
 from strips_framework.lifted.task import LiftedTask, Query, is_variable
 from strips_framework.logic.clauses import Clause
@@ -33,6 +40,8 @@ from strips_framework.worldmodel.proving import PROVED, SATURATED, ProofResult, 
 
 #: Effort and answers a :class:`ProverEngine` allows a prover per query: all of them.
 UNBOUNDED = 10**9
+#: The most goal atoms whose subsets :meth:`_HornProgram.uncompleted` resolves away.
+UNCOMPLETED_ATOMS = 8
 
 
 def engine_of(prover: TheoremProver | None, task: LiftedTask) -> QueryEngine:
@@ -94,7 +103,7 @@ class JoinProver(Configurable):
 
     name: ClassVar[str] = "joins"
     capabilities: ClassVar[frozenset[str]] = frozenset(
-        {ANSWERS, SOUND, COMPLETE, DEFINITE_HORN, ALL_ANSWERS}
+        {ANSWERS, SOUND, COMPLETE, DEFINITE_HORN, ALL_ANSWERS, UNCOMPLETED_PROOF}
     )
 
     def prove(self, task: ProofTask) -> ProofResult:
@@ -102,7 +111,7 @@ class JoinProver(Configurable):
         facts = program.least_model()
         answers = program.answers(facts)
         if not answers:
-            return ProofResult(SATURATED)
+            return ProofResult(SATURATED, uncompleted=program.uncompleted(facts, task.negated_goal[0]))
         return ProofResult(PROVED, tuple(answers[: task.max_answers]))
 
 
@@ -113,6 +122,7 @@ class _HornProgram:
     def __init__(self, task: ProofTask) -> None:
         self._names: dict[object, str] = {}
         self._terms: dict[str, object] = {}
+        self._variables: dict[str, object] = {}
         self.facts: list[tuple[str, ...]] = []
         self.rules: list[tuple[Atom, Query]] = []
         for number, clause in enumerate(task.axioms, start=1):
@@ -168,6 +178,45 @@ class _HornProgram:
             for row in rows
         ]
 
+    def uncompleted(self, facts: FactBase, negated_goal: Clause) -> tuple[Clause, ...]:
+        """What a failed goal leaves to refute, as unit resolution with the model would
+        leave it: the negated goal, and for every proper subset of its atoms that holds
+        together under some binding, the clause of the other atoms under that binding
+        (with the goal parameters it binds). Subsets of goals of at most
+        :data:`UNCOMPLETED_ATOMS` atoms only (their number doubles with each atom)."""
+        atoms = self.goal.positive
+        if len(atoms) > UNCOMPLETED_ATOMS:
+            return (negated_goal,)
+        engine = JoinEngine(self.objects())
+        found: dict[Clause, None] = {negated_goal: None}
+        for size in range(len(atoms) - 1, 0, -1):
+            for kept in combinations(range(len(atoms)), size):
+                resolved = [atoms[i] for i in range(len(atoms)) if i not in kept]
+                variables = tuple(dict.fromkeys(t for a in resolved for t in a.args if is_variable(t)))
+                distinct = tuple(p for p in self.goal.distinct if all(t in variables or not is_variable(t) for t in p))
+                for row in engine.answers(Query(variables, tuple(resolved), (), distinct), facts):
+                    binding = dict(zip(variables, row))
+                    left = [(False, self._original(atoms[i], binding)) for i in kept]
+                    bound = tuple(
+                        sorted(
+                            ((self._variables[v], self._terms.get(value, value)) for v, value in binding.items() if type(self._variables[v]) is Param),
+                            key=lambda pair: (pair[0].name, pair[0].tag),
+                        )
+                    )
+                    found[Clause(left, bindings=bound)] = None
+        return tuple(found)
+
+    def _original(self, atom: Atom, binding: dict[str, str]) -> tuple:
+        """``atom`` under ``binding`` in the task's own terms."""
+        terms = []
+        for term in atom.args:
+            value = binding.get(term, term)
+            if is_variable(value):
+                terms.append(self._variables[value])
+            else:
+                terms.append(self._terms.get(value, value))
+        return (atom.predicate, *terms)
+
     def objects(self) -> tuple[str, ...]:
         return tuple(sorted(set(self._names.values())))
 
@@ -181,10 +230,10 @@ class _HornProgram:
         return (atom[0], *[self._term(t) for t in atom[1:]])
 
     def _term(self, term: object) -> str:
-        if type(term) is int:
-            return f"?v{term}"
-        if type(term) is Param:
-            return f"?p{term.tag}.{term.name}"
+        if type(term) is int or type(term) is Param:
+            name = f"?v{term}" if type(term) is int else f"?p{term.tag}.{term.name}"
+            self._variables[name] = term
+            return name
         if type(term) is tuple and _has_variables(term):
             raise ValueError(f"the function term {term} has variables (not a Datalog program)")
         name = self._names.get(term)
