@@ -72,7 +72,7 @@ def test_unknown_plugin_name_in_config(tmp_path, capsys, monkeypatch):
     config.write_text('[prover]\nname = "z3"\n')
     assert main(["solve", str(THREE_BOXES), "--config", str(config)]) == 2
     err = capsys.readouterr().err
-    assert "prover 'z3' is not registered (available: none); plugin autoload is off" in err
+    assert "prover 'z3' is not registered (available: joins); plugin autoload is off" in err
 
 
 def test_plugins_lists_implementations_with_distributions_and_options(capsys):

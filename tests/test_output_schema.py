@@ -29,6 +29,7 @@ def _statistics_fields(family: str) -> set[str]:
 @pytest.mark.parametrize(("args", "family"), [
     (["examples/three-boxes.strips"], "world-model"),
     (["examples/pddl/blocksworld/p4.pddl"], "forward"),
+    (["examples/pddl/blocksworld/p4.pddl", "--config", "examples/configs/lifted.toml"], "lifted"),
 ])
 def test_the_json_document_has_the_documented_fields(monkeypatch, capsys, args, family):
     monkeypatch.chdir(ROOT)

@@ -55,7 +55,7 @@ def test_unknown_name_lists_the_available_ones_and_a_close_name(monkeypatch):
     with pytest.raises(PluginError) as error:
         registry.get("prover", "z3")
     assert str(error.value) == (
-        "prover 'z3' is not registered (available: none); is the plugin that provides it "
+        "prover 'z3' is not registered (available: joins); is the plugin that provides it "
         "installed? 'strips plugins' lists them"
     )
     with pytest.raises(PluginError, match=r"'means-end' .*; did you mean 'means-ends'\?"):
@@ -103,30 +103,33 @@ def test_misspelled_hook_implementation_is_an_error():
 
 def test_autoload_switch(monkeypatch):
     monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
-    assert Registry(get_plugin_manager()).names("prover") == []
+    assert Registry(get_plugin_manager()).names("prover") == ["joins"]  # the builtin one
 
 
-class _OnlyProver:
+class _OnlyEvaluator:
     @hookimpl
-    def strips_register_provers(self):
-        from strips_z3_prover import Z3Prover
+    def strips_register_evaluators(self):
+        from strips_evaluators.goal_count import GoalCount
 
-        return [Z3Prover]
+        return [GoalCount]
 
 
 def test_defaults_come_from_what_is_registered(monkeypatch):
-    """The core alone: the preferred default 'resolution' is missing, the one prover that
-    is registered takes its place; a table with nothing registered keeps its first
-    preference, whose lookup says what is missing."""
+    """The core alone: a preferred default that is missing ('resolution', 'paper') gives
+    way to the one implementation registered (the builtin 'joins' prover, the plugin's
+    'goal-count'); a table with nothing registered keeps its first preference, whose
+    lookup says what is missing."""
     from strips_framework.plugin.config import Config, default_name
 
     monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
-    registry = Registry(get_plugin_manager([_OnlyProver()]))
-    assert default_name(registry, ("prover",), ("resolution",)) == "z3"
-    config = Config.default().with_registered_defaults(registry, ("prover", "evaluator"))
-    assert config.choices["prover"].name == "z3"
-    assert config.choices["evaluator"].name == "paper"
-    with pytest.raises(PluginError, match=r"no \[evaluator\] chosen, and the default evaluator 'paper' is not registered"):
-        config.registration(registry, "evaluator")
+    registry = Registry(get_plugin_manager([_OnlyEvaluator()]))
+    assert default_name(registry, ("prover",), ("resolution",)) == "joins"
+    assert default_name(registry, ("evaluator",), ("paper",)) == "goal-count"
+    config = Config.default().with_registered_defaults(registry, ("prover", "evaluator", "heuristic"))
+    assert config.choices["prover"].name == "joins"
+    assert config.choices["evaluator"].name == "goal-count"
+    assert config.choices["heuristic"].name == "ff"
+    with pytest.raises(PluginError, match=r"no \[heuristic\] chosen, and the default state heuristic 'ff' is not registered"):
+        config.registration(registry, "heuristic")
     chosen = Config.from_dict({"prover": "resolution"}).with_registered_defaults(registry, ("prover",))
     assert chosen.choices["prover"].name == "resolution"  # what the file chose stays

@@ -27,6 +27,8 @@ EQUALITY = "equality"
 QUANTIFIED_AXIOMS = "quantified-axioms"
 ANSWERS = "answers"
 UNCOMPLETED_PROOF = "uncompleted-proof"
+DEFINITE_HORN = "definite-horn"
+ALL_ANSWERS = "all-answers"
 SOUND = "sound"
 COMPLETE = "complete"
 EFFORT_BOUND = "effort-bound"
@@ -53,6 +55,12 @@ VOCABULARY: dict[str, dict[str, str]] = {
         "only for goals that do not follow",
         COMPLETE: "with enough effort every goal that follows is proved, and every binding "
         "among the answers is found when max_answers allows",
+        DEFINITE_HORN: "answers every task whose axioms are definite Horn clauses (ground "
+        "facts, rules with one positive literal, no equations) and whose negated goal is "
+        "one clause of negated atoms (and, under unique names, the goal's inequalities); "
+        "refuses other tasks with ValueError",
+        ALL_ANSWERS: "finds every answer in one pass, however large max_answers is, at a "
+        "cost that does not grow with the effort (what the lifted search asks for)",
         EFFORT_BOUND: "task.effort bounds the work deterministically: the same task gives "
         "the same result, and effort_used never exceeds effort",
         ANSWER_LITERALS: "a clause of positive $answer literals alone (logic.terms.ANSWER) "
@@ -73,6 +81,7 @@ VOCABULARY: dict[str, dict[str, str]] = {
         PREFERRED_OPERATORS: "estimate_with_preferred names action instances applicable in "
         "the state that lead towards the goal (heuristics without it name none)",
     },
+    "lifted-strategy": {},
     "strategy": {
         OPTIMAL: "the plan found is a shortest one when the strategy's soft requirements "
         "(e.g. an admissible evaluator) hold",

@@ -12,6 +12,7 @@ grounded. Both return a :class:`~strips_framework.result.Result`.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -20,7 +21,7 @@ from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
 from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
-from strips_framework.plugin.config import Config
+from strips_framework.plugin.config import PDDL_DEFAULT_STRATEGY, Choice, Config
 from strips_framework.plugin.registry import KINDS, Registry
 from strips_framework.records import Record
 from strips_framework.user_files import is_dir, is_file
@@ -36,6 +37,13 @@ if TYPE_CHECKING:
     from strips_framework.worldmodel.proving import TheoremProver
 
 GROUND_STRATEGY = "ground-strategy"
+LIFTED_STRATEGY = "lifted-strategy"
+#: The strategy PDDL input gets when the config names none and grounding looks expensive.
+PDDL_LIFTED_STRATEGY = "lifted-gbfs"
+#: The lifted heuristic a lifted strategy gets when the config names no ``[heuristic]``:
+#: the first of these that is registered (the evaluators plugin registers ``ff``; the
+#: core's own ``goal-count`` is there without any plugin).
+LIFTED_DEFAULT_HEURISTICS = ("ff", "goal-count")
 
 
 class Planner(Record):
@@ -99,9 +107,17 @@ class Planner(Record):
         config = config.with_registered_defaults(self.registry, tables)
         if config is not self.config:
             return self._replace(config=config).checked()
+        if self.searches_lifted_tasks and "heuristic" not in self.config.chosen:
+            names = self.registry.names("lifted-heuristic")
+            default = next((n for n in LIFTED_DEFAULT_HEURISTICS if n in names), None)
+            if default is not None and default != self.config.choices["heuristic"].name:
+                choices = {**self.config.choices, "heuristic": Choice("heuristic", default)}
+                return self._replace(config=self.config._replace(choices=choices)).checked()
         kinds = list(self.kinds_used())
         for table in sorted(self.config.chosen):
             kind = self.config.strategy_kind(self.registry) if table == "strategy" else table
+            if table == "heuristic" and self.searches_lifted_tasks:
+                kind = "lifted-heuristic"
             if kind not in kinds:
                 kinds.append(kind)
         for kind in kinds:
@@ -133,12 +149,21 @@ class Planner(Record):
         forward search never loads the prover, and a means-ends search no heuristic)."""
         if self.searches_ground_tasks:
             return (GROUND_STRATEGY, "heuristic")
+        if self.searches_lifted_tasks:
+            # The query engine is the builtin join engine unless [prover] names one.
+            engine = ("prover",) if "prover" in self.config.chosen else ()
+            return (LIFTED_STRATEGY, "lifted-heuristic", *engine)
         return ("strategy", "prover", "difference", "relevance", "evaluator")
 
     @property
     def searches_ground_tasks(self) -> bool:
         """True when the configured strategy searches ground tasks (PDDL input only)."""
         return self.config.strategy_kind(self.registry) == GROUND_STRATEGY
+
+    @property
+    def searches_lifted_tasks(self) -> bool:
+        """True when the configured strategy searches PDDL tasks without grounding."""
+        return self.config.strategy_kind(self.registry) == LIFTED_STRATEGY
 
     def for_pddl(self) -> Planner:
         """The planner for PDDL input: the config's, with the strategy defaulting to
@@ -187,7 +212,37 @@ class Planner(Record):
             problem = self.load(problem_path)
             return self.solve(problem, clock, _read_library(library, problem))
         pddl = self.load_pddl(problem_path, domain_path)
-        return self.for_pddl().solve_pddl(pddl, clock, parse_seconds=clock.elapsed(), library=library)
+        planner, reason = self.for_pddl_task(pddl)
+        if reason:
+            print(f"strips: {reason}", file=sys.stderr)
+        return planner.solve_pddl(pddl, clock, parse_seconds=clock.elapsed(), library=library)
+
+    def for_pddl_task(self, pddl: PddlTask) -> tuple[Planner, str | None]:
+        """The planner for ``pddl`` and, when the config names no strategy, the line
+        saying which search was chosen and why: the ground search
+        (:data:`~strips_framework.plugin.config.PDDL_DEFAULT_STRATEGY`) when grounding
+        looks cheap, else the lifted one (:data:`PDDL_LIFTED_STRATEGY`), decided from
+        :func:`~strips_framework.lifted.estimate.estimated_operators` before grounding
+        anything."""
+        if "strategy" in self.config.chosen:
+            return self.for_pddl(), None
+        from strips_framework.lifted.estimate import CHEAP_GROUNDING, estimated_operators
+        from strips_framework.lifted.task import LiftedTask
+
+        estimate = estimated_operators(LiftedTask(pddl))
+        if estimate <= CHEAP_GROUNDING:
+            name = PDDL_DEFAULT_STRATEGY
+            why = f"grounding looks cheap (about {estimate:,.0f} operators estimated)"
+        else:
+            name = PDDL_LIFTED_STRATEGY
+            why = (
+                f"grounding looks expensive (about {estimate:,.0f} operators estimated, more "
+                f"than {CHEAP_GROUNDING:,}): searching without grounding"
+            )
+        choices = {**self.config.choices, "strategy": Choice("strategy", name)}
+        config = self.config._replace(choices=choices)
+        planner = Planner(self.registry, config, self.progress, self.observers)
+        return planner.checked(), f"strategy {name}: {why}"
 
     def solve_pddl(
         self,
@@ -200,6 +255,8 @@ class Planner(Record):
         it grounded, a world-model strategy its translation to a :class:`Problem`.
         (Call :meth:`for_pddl` first for ``strips solve``'s default strategy.)"""
         clock = clock or Clock(self.config.limits.time)
+        if self.searches_lifted_tasks:
+            return self.solve_lifted(pddl, clock, parse_seconds)
         if not self.searches_ground_tasks:
             from strips_framework.pddl import to_problem
 
@@ -222,6 +279,36 @@ class Planner(Record):
             parse_seconds=parse_seconds,
             ground_seconds=searching_since - grounding_since,
             search_seconds=clock.elapsed() - searching_since,  # the heuristic's set-up included
+        )
+        return result._replace(statistics=statistics, seconds=clock.elapsed())
+
+    def solve_lifted(
+        self, pddl: PddlTask, clock: Clock | None = None, parse_seconds: float = 0.0
+    ) -> Result:
+        """Search ``pddl`` without grounding it, with the configured lifted strategy and
+        lifted heuristic; the query engine is the ``[prover]`` the config names (a prover
+        that is no query engine answers through
+        :class:`~strips_framework.lifted.prover.ProverEngine`), else the join engine."""
+        from strips_framework.lifted.prover import engine_of
+        from strips_framework.lifted.successors import Successors
+        from strips_framework.lifted.task import LiftedTask
+
+        clock = clock or Clock(self.config.limits.time)
+        setup_since = clock.elapsed()
+        task = LiftedTask(pddl)
+        prover = self.prover() if "prover" in self.config.chosen else None
+        successors = Successors(task, engine_of(prover, task))
+        strategy = self.config.build(self.registry, LIFTED_STRATEGY)
+        heuristic = self.config.build(self.registry, "lifted-heuristic")
+        estimator = heuristic.for_task(pddl)
+        if self.progress is not None:
+            estimator = self.progress.estimator(estimator)
+        searching_since = clock.elapsed()
+        result = strategy.search_task(successors, estimator, self.config.limits, clock)
+        statistics = result.statistics._replace(
+            parse_seconds=parse_seconds,
+            setup_seconds=searching_since - setup_since,
+            search_seconds=clock.elapsed() - searching_since,
         )
         return result._replace(statistics=statistics, seconds=clock.elapsed())
 

@@ -63,7 +63,28 @@ def strips_register_ground_strategies() -> list[type]:
 
 
 @hookimpl
+def strips_register_lifted_strategies() -> list[type]:
+    from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
+
+    return [LiftedLazyGreedySearch, LiftedBFWS]
+
+
+@hookimpl
+def strips_register_lifted_heuristics() -> list[type]:
+    from strips_framework.lifted.goal_count import LiftedGoalCount
+
+    return [LiftedGoalCount]
+
+
+@hookimpl
 def strips_register_macro_learners() -> list[type]:
     from strips_framework.macrops.learning import TriangleTableLearner
 
     return [TriangleTableLearner]
+
+
+@hookimpl
+def strips_register_provers() -> list[type]:
+    from strips_framework.lifted.prover import JoinProver
+
+    return [JoinProver]

@@ -87,7 +87,13 @@ PDDL_DEFAULT_STRATEGIES = ("lazy-gbfs",)
 PDDL_DEFAULT_STRATEGY = PDDL_DEFAULT_STRATEGIES[0]
 #: The config table that chooses a plugin kind, where it is not the kind itself: both
 #: kinds of strategy are named in ``[strategy]`` (so their names must not clash).
-TABLE_OF = {"ground-strategy": "strategy"}
+TABLE_OF = {
+    "ground-strategy": "strategy",
+    "lifted-strategy": "strategy",
+    "lifted-heuristic": "heuristic",
+}
+#: The kinds of strategy the ``[strategy]`` table may name.
+STRATEGY_KINDS = ("strategy", "ground-strategy", "lifted-strategy")
 
 
 class Choice(Record):
@@ -227,25 +233,24 @@ class Config(Record):
 
     def strategy_kind(self, registry: Registry) -> str:
         """``"ground-strategy"`` when ``[strategy]`` names a ground-task strategy,
-        ``"strategy"`` when it names a world-model one."""
+        ``"lifted-strategy"`` when it names a lifted one, ``"strategy"`` when it names a
+        world-model one."""
         name = self.choices["strategy"].name
-        ground = name in registry.names("ground-strategy")
-        model = name in registry.names("strategy")
-        if ground and model:
+        kinds = [kind for kind in STRATEGY_KINDS if name in registry.names(kind)]
+        if len(kinds) > 1:
+            words = " and as a ".join(KINDS[kind][1] for kind in kinds)
             raise PluginError(
-                f"strategy {name!r} is registered both as a world-model and as a "
-                "ground-task strategy; one plugin must rename its class"
+                f"strategy {name!r} is registered both as a {words}; one plugin must "
+                "rename its class"
             )
-        if ground:
-            return "ground-strategy"
-        if not model:
-            available = ", ".join(sorted(registry.names("strategy") + registry.names("ground-strategy")))
+        if not kinds:
+            available = ", ".join(sorted(n for kind in STRATEGY_KINDS for n in registry.names(kind)))
             raise PluginError(
                 f"{self.source.at('strategy.name')}: 'strategy.name': search strategy {name!r} "
                 "is not registered "
                 f"(available: {available}); 'strips plugins' lists them"
             )
-        return "strategy"
+        return kinds[0]
 
     def section(self, key: str) -> Any:
         """The ``[key]`` table (one of :data:`SECTIONS`) built into its class, with wrong

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from strips_framework.formats import ProblemLoader
     from strips_framework.forward.components import GroundTaskStrategy, StateHeuristic
     from strips_framework.lifted.components import LiftedHeuristic
+    from strips_framework.lifted.search import LiftedStrategy
     from strips_framework.macrops.learning import MacroLearner
     from strips_framework.means_ends.components import (
         DifferenceExtractor,
@@ -106,6 +107,20 @@ def strips_register_ground_strategies() -> list[type[GroundTaskStrategy]]:
     (:class:`~strips_framework.forward.result.ForwardStatistics`). The config names
     it in the same ``[strategy]`` table as the world-model strategies, so its name must
     differ from theirs.
+    """
+
+
+@hookspec
+def strips_register_lifted_strategies() -> list[type[LiftedStrategy]]:
+    """Return lifted-task search-strategy classes.
+
+    A lifted strategy searches a PDDL task without grounding it (see
+    :mod:`strips_framework.lifted`): it is given the task's
+    :class:`~strips_framework.lifted.successors.Successors` (the compiled task and the query
+    engine that answers its preconditions) and the estimator of the configured lifted
+    heuristic, and returns a :class:`~strips_framework.result.Result` with
+    :class:`~strips_framework.lifted.result.LiftedStatistics`. The config names it in
+    the ``[strategy]`` table, so its name must differ from every other strategy's.
     """
 
 

@@ -35,6 +35,9 @@ KINDS = {
     "ground-strategy": (
         "strips_register_ground_strategies", "ground-task strategy", "ground-task strategies"
     ),
+    "lifted-strategy": (
+        "strips_register_lifted_strategies", "lifted-task strategy", "lifted-task strategies"
+    ),
     "prover": ("strips_register_provers", "prover", "provers"),
     "difference": (
         "strips_register_difference_extractors", "difference extractor", "difference extractors"

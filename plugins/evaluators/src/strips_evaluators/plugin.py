@@ -55,11 +55,9 @@ def strips_register_heuristics() -> list[type[StateHeuristic]]:
 
 @hookimpl
 def strips_register_lifted_heuristics() -> list[type[LiftedHeuristic]]:
-    from strips_evaluators.lifted.heuristics import (
-        LiftedAdditive,
-        LiftedFF,
-        LiftedGoalCount,
-        LiftedMax,
-    )
+    from strips_evaluators.lifted.heuristics import LiftedAdditive, LiftedFF, LiftedMax
 
-    return [LiftedGoalCount, LiftedMax, LiftedAdditive, LiftedFF]
+    # The lifted goal-count is the core's (strips_framework.lifted.goal_count), so that a
+    # lifted search has a heuristic without this plugin; registering it here too would
+    # register the name twice.
+    return [LiftedMax, LiftedAdditive, LiftedFF]

@@ -1,0 +1,411 @@
+"""Answering conjunctive queries over the atoms of a state: the join engine behind the
+lifted search (the paper's III.A question "which instances of this precondition hold?",
+asked of a database instead of a resolution prover).
+
+Each positive atom of a query becomes a *relation* over its variables: the atoms of its
+predicate that match its objects, its repeated variables and its variables' types,
+projected on its variables. The relations of static predicates are built once per task;
+those of the state's predicates once per state and shared by every query that asks the
+same atom pattern. The query's answers are the join of the relations, filtered by its
+negated atoms and inequalities as soon as their variables are bound, and projected on the
+answer variables. Facts are filed in sorted order, so no answer's order, and so no
+search, depends on hash order.
+
+An acyclic query (a join tree exists, found by GYO reduction) is answered the Yannakakis
+way: semi-joins up and down the tree first remove every tuple that takes part in no
+answer, so no join step makes a tuple the next one throws away. A cyclic query is joined
+greedily: the smallest relation first, then always the smallest one sharing a variable
+with what is joined. Each join is a hash join on the shared variables; the hash index of
+a relation is built once per relation (so once per task for a static one).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from operator import itemgetter
+from typing import Protocol
+
+from strips_framework.lifted.components import GroundAtom
+from strips_framework.lifted.task import Query, is_variable
+from strips_framework.pddl.formulas import Atom
+
+Row = tuple[str, ...]
+
+
+class Relation:
+    """Rows over ``columns`` (variables), with hash indexes on column subsets made on
+    first use."""
+
+    __slots__ = ("columns", "rows", "_indexes")
+
+    def __init__(self, columns: tuple[str, ...], rows: list[Row]) -> None:
+        self.columns = columns
+        self.rows = rows
+        self._indexes: dict[tuple[int, ...], dict[object, list[Row]]] = {}
+
+    def index(self, positions: tuple[int, ...]) -> dict[object, list[Row]]:
+        """The rows by their values at ``positions`` (a single value for one position)."""
+        found = self._indexes.get(positions)
+        if found is None:
+            found = {}
+            key = _getter(positions)
+            for row in self.rows:
+                k = key(row)
+                bucket = found.get(k)
+                if bucket is None:
+                    found[k] = [row]
+                else:
+                    bucket.append(row)
+            self._indexes[positions] = found
+        return found
+
+
+def _getter(positions: Sequence[int]):  # noqa: ANN202 - itemgetter or a lambda
+    """A function from a row to its values at ``positions``: a single value for one
+    position, a tuple for several (``()`` for none)."""
+    if not positions:
+        return lambda row: ()
+    return itemgetter(*positions)
+
+
+class FactBase:
+    """Atoms filed by predicate, with the relation of each atom pattern built on first
+    use. A state's fact base sits on the task's static one, which answers for the static
+    predicates (and keeps its relations for the whole search)."""
+
+    __slots__ = ("atoms", "_by_predicate", "_relations", "static", "_static_predicates")
+
+    def __init__(
+        self,
+        atoms: Iterable[GroundAtom],
+        static: FactBase | None = None,
+        static_predicates: frozenset[str] = frozenset(),
+    ) -> None:
+        self.atoms: set[GroundAtom] = set(atoms)
+        # Filed by predicate and arity (a prover's task may use a name at two arities).
+        by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
+        for atom in sorted(self.atoms):  # so that no answer's order depends on hashing
+            key = (atom[0], len(atom))
+            found = by_predicate.get(key)
+            if found is None:
+                by_predicate[key] = [atom]
+            else:
+                found.append(atom)
+        self._by_predicate = by_predicate
+        self._relations: dict[object, Relation] = {}
+        self.static = static
+        self._static_predicates = static_predicates
+
+    def holds(self, atom: GroundAtom) -> bool:
+        if self.static is not None and atom[0] in self._static_predicates:
+            return atom in self.static.atoms
+        return atom in self.atoms
+
+    def add(self, atoms: Iterable[GroundAtom]) -> list[GroundAtom]:
+        """Add (derived) atoms; the new ones, whose predicates' relations are rebuilt."""
+        new = sorted({atom for atom in atoms if atom not in self.atoms})
+        if new:
+            self.atoms.update(new)
+            touched = set()
+            for atom in new:
+                self._by_predicate.setdefault((atom[0], len(atom)), []).append(atom)
+                touched.add(atom[0])
+            self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
+        return new
+
+    def relation(self, pattern: Pattern) -> Relation:
+        """The atoms matching ``pattern`` as rows over its variables."""
+        if self.static is not None and pattern.predicate in self._static_predicates:
+            return self.static.relation(pattern)
+        found = self._relations.get(pattern.key)
+        if found is None:
+            found = self._relations[pattern.key] = pattern.match(
+                self._by_predicate.get((pattern.predicate, pattern.size), ())
+            )
+        return found
+
+
+class Pattern:
+    """A query atom compiled for matching: the objects it needs at which positions, its
+    repeated variables, its variables' domains, and which positions become the
+    relation's columns (each variable's first occurrence, in order). ``key`` is the same
+    for equal atoms with the same domains, so a state matches each pattern once."""
+
+    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size")
+
+    def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
+        self.predicate = atom.predicate
+        self.key = (atom.predicate, atom.args, tuple(id(domains.get(a)) for a in atom.args))
+        columns: list[str] = []
+        self.taken: list[int] = []
+        self.checks: list[tuple[int, str]] = []  # position, object
+        self.repeats: list[tuple[int, int]] = []  # position, earlier position
+        self.typed: list[tuple[int, frozenset[str]]] = []
+        for position, term in enumerate(atom.args, start=1):
+            if not is_variable(term):
+                self.checks.append((position, term))
+            elif term in columns:
+                self.repeats.append((position, self.taken[columns.index(term)]))
+            else:
+                columns.append(term)
+                self.taken.append(position)
+                domain = domains.get(term)
+                if domain is not None:
+                    self.typed.append((position, domain))
+        self.columns = tuple(columns)
+        self.size = len(atom.args) + 1
+
+    def match(self, atoms: Sequence[GroundAtom]) -> Relation:
+        candidates = atoms  # of the pattern's predicate and arity
+        for position, value in self.checks:
+            candidates = [a for a in candidates if a[position] == value]
+        for position, earlier in self.repeats:
+            candidates = [a for a in candidates if a[position] == a[earlier]]
+        for position, domain in self.typed:
+            candidates = [a for a in candidates if a[position] in domain]
+        taken = self.taken
+        if len(taken) == 1:
+            only = taken[0]
+            rows = [(a[only],) for a in candidates]
+        elif taken:
+            rows = list(map(itemgetter(*taken), candidates))
+        else:
+            rows = [()] if candidates else []
+        return Relation(self.columns, rows)
+
+
+class QueryEngine(Protocol):
+    """Answers conjunctive queries over a fact base (the lifted search's prover)."""
+
+    def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+        """Every binding of ``query.variables`` under which the query holds in
+        ``facts`` (extending ``seed``, whose variables are already bound), each once,
+        in an order that does not depend on hashing."""
+        ...
+
+
+class _Plan:
+    """How one query is joined: the order of its relations (and, for an acyclic one,
+    the join tree's edges for the semi-join passes)."""
+
+    __slots__ = ("tree",)
+
+    def __init__(self, tree: list[tuple[int, int]] | None) -> None:
+        #: ``(child, parent)`` in GYO order (leaves first), or None for a cyclic query.
+        self.tree = tree
+
+
+def join_tree(edges: Sequence[frozenset[str]]) -> list[tuple[int, int]] | None:
+    """The edges of a join tree of the hypergraph ``edges`` as ``(child, parent)``,
+    leaves first (GYO reduction: remove an *ear*, an edge whose variables shared with
+    the others all lie in one other edge, its parent); None when it is cyclic."""
+    alive = list(range(len(edges)))
+    tree: list[tuple[int, int]] = []
+    while len(alive) > 1:
+        for e in alive:
+            others = [o for o in alive if o != e]
+            shared = edges[e] & frozenset().union(*(edges[o] for o in others))
+            parent = next((f for f in others if shared <= edges[f]), None)
+            if parent is not None:
+                tree.append((e, parent))
+                alive.remove(e)
+                break
+        else:
+            return None
+    return tree
+
+
+class JoinEngine:
+    """The query engine of the module docstring. ``yannakakis`` turns the semi-join
+    passes off (for measuring them); answers are the same either way."""
+
+    def __init__(self, objects: Sequence[str], yannakakis: bool = True) -> None:
+        self.objects = tuple(objects)
+        self.yannakakis = yannakakis
+        self._plans: dict[tuple[Query, tuple[str, ...]], _Plan] = {}
+        self._patterns: dict[Query, list[Pattern]] = {}
+
+    def relations(
+        self, query: Query, facts: FactBase, seed: dict[str, str] | None
+    ) -> list[Relation] | None:
+        """The relations of the query's positive atoms (and one row for ``seed``);
+        None when one is empty (the query has no answer)."""
+        domains = query.domains
+        patterns = self._patterns.get(query)
+        if patterns is None:
+            patterns = self._patterns[query] = [Pattern(atom, domains) for atom in query.positive]
+        relations = [facts.relation(pattern) for pattern in patterns]
+        if seed:
+            if any(v in domains and value not in domains[v] for v, value in seed.items()):
+                return None  # an equality merged a seeded variable with one of another type
+            relations.append(Relation(tuple(seed), [tuple(seed.values())]))
+        for relation in relations:
+            if not relation.rows:
+                return None
+        return relations
+
+    def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+        relations = self.relations(query, facts, seed)
+        if relations is None:
+            return []
+        seeded = tuple(seed) if seed else ()
+        bound = {c for r in relations for c in r.columns}
+        for variable in query.all_variables():
+            if variable not in bound:  # only in negated atoms, inequalities or answers
+                domain = query.domains.get(variable)
+                values = sorted(domain) if domain is not None else self.objects
+                relations.append(Relation((variable,), [(v,) for v in values]))
+                bound.add(variable)
+        plan = self._plans.get((query, seeded))
+        if plan is None:
+            edges = [frozenset(r.columns) for r in relations]
+            plan = self._plans[(query, seeded)] = _Plan(join_tree(edges) if self.yannakakis else None)
+        if not relations:  # no variables: only ground negated atoms and inequalities
+            columns, rows = [], _Filters(query, facts).apply([], [()])
+        elif plan.tree is not None:
+            columns, rows = self._acyclic(relations, plan.tree, query, facts)
+        else:
+            columns, rows = self._greedy(relations, query, facts)
+        return _project(columns, rows, query)
+
+    def _acyclic(
+        self, relations: list[Relation], tree: list[tuple[int, int]], query: Query, facts: FactBase
+    ) -> tuple[list[str], list[Row]]:
+        rows = [r.rows for r in relations]
+        columns = [r.columns for r in relations]
+        for child, parent in tree:  # up: a parent keeps the rows some child row agrees with
+            rows[parent] = _semijoin(columns[parent], rows[parent], columns[child], rows[child])
+            if not rows[parent]:
+                return [], []
+        for child, parent in reversed(tree):  # down
+            rows[child] = _semijoin(columns[child], rows[child], columns[parent], rows[parent])
+        root = tree[-1][1] if tree else 0
+        order = [root] + [child for child, _ in reversed(tree)]
+        return self._join_in_order(
+            [Relation(columns[i], rows[i]) if rows[i] is not relations[i].rows else relations[i] for i in order],
+            query,
+            facts,
+        )
+
+    def _greedy(
+        self, relations: list[Relation], query: Query, facts: FactBase
+    ) -> tuple[list[str], list[Row]]:
+        remaining = sorted(relations, key=lambda r: len(r.rows))
+        order = [remaining.pop(0)]
+        known = set(order[0].columns)
+        while remaining:
+            connected = [r for r in remaining if known.intersection(r.columns)]
+            chosen = (connected or remaining)[0]
+            remaining.remove(chosen)
+            order.append(chosen)
+            known.update(chosen.columns)
+        return self._join_in_order(order, query, facts)
+
+    def _join_in_order(
+        self, order: list[Relation], query: Query, facts: FactBase
+    ) -> tuple[list[str], list[Row]]:
+        filters = _Filters(query, facts)
+        first = order[0]
+        columns = list(first.columns)
+        rows = filters.apply(columns, first.rows)
+        for relation in order[1:]:
+            if not rows:
+                return columns, []
+            shared = [c for c in relation.columns if c in columns]
+            extra = [i for i, c in enumerate(relation.columns) if c not in columns]
+            index = relation.index(tuple(relation.columns.index(c) for c in shared))
+            key = _getter([columns.index(c) for c in shared])
+            joined: list[Row] = []
+            if extra:
+                pick = _getter(extra) if len(extra) > 1 else None
+                single = extra[0]
+                for row in rows:
+                    for match in index.get(key(row), ()):
+                        joined.append(row + (pick(match) if pick else (match[single],)))
+            else:
+                joined = [row for row in rows if key(row) in index]
+            columns.extend(relation.columns[i] for i in extra)
+            rows = filters.apply(columns, joined)
+        return columns, rows
+
+
+def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+    """The rows that agree with some row of ``other_rows`` on the shared columns."""
+    shared = [c for c in columns if c in other]
+    if not shared:
+        return rows if other_rows else []
+    mine = _getter([columns.index(c) for c in shared])
+    theirs = _getter([other.index(c) for c in shared])
+    keys = set(map(theirs, other_rows))
+    kept = [row for row in rows if mine(row) in keys]
+    return rows if len(kept) == len(rows) else kept
+
+
+class _Filters:
+    """The query's negated atoms and inequalities, each applied once all its variables
+    are bound."""
+
+    def __init__(self, query: Query, facts: FactBase) -> None:
+        self.facts = facts
+        self.pending: list[tuple[str, object]] = [("neq", pair) for pair in query.distinct]
+        self.pending += [("not", atom) for atom in query.negative]
+
+    def apply(self, columns: list[str], rows: list[Row]) -> list[Row]:
+        if not self.pending or not rows:
+            return rows
+        ready = []
+        waiting = []
+        for kind, item in self.pending:
+            terms = item if kind == "neq" else item.args  # type: ignore[union-attr]
+            if all(not is_variable(t) or t in columns for t in terms):
+                ready.append((kind, item))
+            else:
+                waiting.append((kind, item))
+        self.pending = waiting
+        for kind, item in ready:
+            if kind == "neq":
+                left, right = item  # type: ignore[misc]
+                get_left = _term_getter(left, columns)
+                get_right = _term_getter(right, columns)
+                rows = [row for row in rows if get_left(row) != get_right(row)]
+            else:
+                atom: Atom = item  # type: ignore[assignment]
+                holds = self.facts.holds
+                getters = [_term_getter(t, columns) for t in atom.args]
+                predicate = atom.predicate
+                rows = [
+                    row for row in rows if not holds((predicate, *[g(row) for g in getters]))
+                ]
+        return rows
+
+
+def _term_getter(term: str, columns: list[str]):  # noqa: ANN202
+    if is_variable(term):
+        return itemgetter(columns.index(term))
+    return lambda row: term
+
+
+def _project(columns: list[str], rows: list[Row], query: Query) -> list[Row]:
+    """The rows as bindings of the answer variables, each once. The rows are distinct
+    already (every relation's are, and so are their joins'); only a projection that
+    drops a column can repeat one. Their order is the fact base's filing order, which
+    does not depend on hashing."""
+    if not rows:
+        return []
+    picks = []
+    for variable in query.variables:
+        term = query.same.get(variable, variable)
+        picks.append(columns.index(term) if is_variable(term) else term)
+    if all(isinstance(p, int) for p in picks):
+        if picks == list(range(len(columns))):
+            answers = rows
+        elif not picks:
+            return [()]
+        else:
+            get = itemgetter(*picks)
+            answers = [get(row) for row in rows] if len(picks) > 1 else [(row[picks[0]],) for row in rows]  # type: ignore[index]
+    else:
+        answers = [tuple(row[p] if isinstance(p, int) else p for p in picks) for row in rows]
+    if len({p for p in picks if isinstance(p, int)}) < len(columns):
+        return list(dict.fromkeys(answers))
+    return answers

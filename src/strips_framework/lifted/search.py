@@ -1,0 +1,274 @@
+"""Lifted progression search: forward search whose states are sets of ground atoms and
+whose successors come from the query engine (:mod:`.successors`), so the task is never
+grounded. The open lists are the forward search's (:mod:`strips_framework.forward.openlists`),
+and so are the limits' checks; what differs from a ground search is only how a state is
+stored (:mod:`.space`) and expanded.
+
+``lifted-gbfs`` is lazy greedy best-first search with preferred operators, as the ground
+``lazy-gbfs`` (and Fast Downward's ``lazy_greedy([h], preferred=[h])``): a state's
+successors enter the open list under its own estimate and are made, tested for
+duplicates and evaluated only when they come out. ``lifted-bfws`` is eager greedy search
+with width-based novelty, the shape of Powerlifted's ``alt-bfws1``: every successor is
+evaluated when generated, and two open lists alternate, one ordered by the estimate and
+one by (novelty, estimate) where a state is novel (1) when it holds an atom no earlier
+state with the same estimate held, else 2 (Lipovetzky and Geffner's BFWS(f5), width 1).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import ClassVar
+
+from strips_framework.forward.budget import Budget, peak_mib
+from strips_framework.forward.openlists import AlternationOpenList, BestFirstOpenList, open_list
+from strips_framework.lifted.components import ActionInstance, LiftedEstimator, LiftedState
+from strips_framework.lifted.query import FactBase
+from strips_framework.lifted.result import LiftedStatistics
+from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
+from strips_framework.lifted.successors import Successors, step_name
+from strips_framework.limits import Clock, LimitReached, Limits
+from strips_framework.options import Configurable, Option
+from strips_framework.result import Result, Status
+
+
+class LiftedRun:
+    """One search: the successors, the estimator, the limits, the state space and the
+    counters, updated in place so that a run stopped by a limit still reports them."""
+
+    def __init__(
+        self, successors: Successors, estimator: LiftedEstimator, limits: Limits, clock: Clock
+    ) -> None:
+        self.successors = successors
+        self.estimator = estimator
+        self.budget = Budget(limits, clock)
+        self.space = LiftedStateSpace()
+        self.expanded = 0
+        self.evaluated = 0
+        self.generated = 0
+        self.dead_ends = 0
+        #: The state last expanded, its number and fact base: lazy search pops its
+        #: successors next, and the conditions of their effects are read in it.
+        self._parent: tuple[int, LiftedState, FactBase | None] = (NO_PARENT, frozenset(), None)
+
+    def parent(self, number: int) -> tuple[LiftedState, FactBase | None]:
+        if self._parent[0] != number:
+            self._parent = (number, self.space.state(number), None)
+        return self._parent[1], self._parent[2]
+
+    def remember(self, number: int, state: LiftedState, facts: FactBase) -> None:
+        self._parent = (number, state, facts)
+
+    def child(self, parent: int, step: ActionInstance) -> tuple[LiftedState, bytes, int]:
+        """The state ``step`` leads to from state ``parent``, packed, and its path cost.
+        The packing is the parent's with the few changed atoms' numbers taken out and put
+        in, not the whole state's numbers looked up again."""
+        state, facts = self.parent(parent)
+        successors = self.successors
+        if facts is None and successors.schema(step[0]).effects:
+            facts = successors.facts(state)
+            self._parent = (parent, state, facts)
+        removed, added, cost = successors.change(state, facts, step)
+        packed = self.space.repack(self.space.packed[parent], removed, added)
+        return (state - removed) | added, packed, self.space.g[parent] + cost
+
+
+class LiftedStrategy(Configurable):
+    """The base of the strategies over lifted tasks (the ``lifted-strategy`` plugin
+    kind): the planner gives them the task's :class:`Successors` (the compiled task and
+    its query engine) and the lifted heuristic's estimator."""
+
+    name: ClassVar[str]
+    capabilities: ClassVar[frozenset[str]] = frozenset()
+    #: True when running out of states proves the task unsolvable.
+    complete: ClassVar[bool] = True
+
+    def search_task(
+        self,
+        successors: Successors,
+        estimator: LiftedEstimator,
+        limits: Limits,
+        clock: Clock | None = None,
+    ) -> Result:
+        clock = clock or Clock(limits.time)
+        begin = clock.elapsed()
+        run = LiftedRun(successors, estimator, limits, clock)
+        goal: int | None = None
+        try:
+            goal = self.run(run)
+            status = Status.SOLVED if goal is not None else Status.UNSOLVABLE
+        except LimitReached as limit:
+            status = limit.status
+        except KeyboardInterrupt:
+            status = Status.INTERRUPTED
+        except MemoryError:
+            status = Status.MEMORY_LIMIT
+        states, per_state = len(run.space), run.space.bytes_per_state()
+        if status == Status.MEMORY_LIMIT:
+            run.space.clear()
+        task = successors.task
+        statistics = LiftedStatistics(
+            expanded=run.expanded,
+            evaluated=run.evaluated,
+            generated=run.generated,
+            dead_ends=run.dead_ends,
+            states=states,
+            bytes_per_state=per_state,
+            atoms=run.space.atoms,
+            actions=len(task.actions),
+            search_seconds=clock.elapsed() - begin,
+            peak_memory_mib=peak_mib(),
+        )
+        if goal is None:
+            return Result(status, None, None, statistics, clock.elapsed(), task.uses_costs)
+        steps = run.space.plan_to(goal)
+        plan = tuple(step_name(step) for step in steps)
+        cost = run.space.g[goal]
+        return Result(status, plan, cost, statistics, clock.elapsed(), task.uses_costs)
+
+    def run(self, run: LiftedRun) -> int | None:
+        """The search proper: the number of a goal state, or None when out of states."""
+        raise NotImplementedError
+
+
+class LiftedLazyGreedySearch(LiftedStrategy):
+    """Lazy greedy best-first search over lifted states, with preferred operators."""
+
+    name: ClassVar[str] = "lifted-gbfs"
+    options = (
+        Option("preferred", bool, True, doc="a second open list for preferred operators"),
+        Option("boost", int, 1000, minimum=0, doc="extra turns of that list on progress"),
+    )
+    preferred: bool
+    boost: int
+
+    def run(self, run: LiftedRun) -> int | None:
+        successors, space, budget = run.successors, run.space, run.budget
+        estimate = run.estimator.estimate
+        evaluate_preferred = run.estimator.estimate_with_preferred
+        frontier: BestFirstOpenList | AlternationOpenList = open_list(self.preferred, self.boost)
+        best_h = math.inf
+        state: LiftedState = successors.task.init
+        number = space.add(space.pack(state), NO_PARENT, None, 0)
+        while True:
+            facts = successors.facts(state)
+            if successors.is_goal(facts):
+                return number
+            if self.preferred:
+                h, preferred = evaluate_preferred(state)
+            else:
+                h, preferred = estimate(state), ()
+            run.evaluated += 1
+            if h == math.inf:
+                run.dead_ends += 1
+            else:
+                budget.check(run.expanded)
+                run.expanded += 1
+                if h < best_h:
+                    if best_h != math.inf:
+                        frontier.reward_progress()
+                    best_h = h
+                run.remember(number, state, facts)
+                entries = [(number, step) for step in successors.applicable(facts)]
+                run.generated += len(entries)
+                frontier.push_all(h, entries, {(number, step) for step in preferred})
+            while True:
+                if not frontier:
+                    return None
+                parent, step = frontier.pop()
+                state, packed, g = run.child(parent, step)
+                if packed not in space.ids:
+                    number = space.add(packed, parent, step, g)
+                    break
+
+
+class LiftedBFWS(LiftedStrategy):
+    """Eager greedy search alternating an h-ordered list with a (novelty, h)-ordered one
+    (see the module docstring); preferred operators, when the heuristic names them, feed
+    a third list as in Powerlifted's ``alt-bfws``."""
+
+    name: ClassVar[str] = "lifted-bfws"
+    options = (
+        Option("preferred", bool, True, doc="an open list of states reached by preferred operators"),
+    )
+    preferred: bool
+
+    def run(self, run: LiftedRun) -> int | None:
+        successors, space, budget = run.successors, run.space, run.budget
+        estimator = run.estimator
+        novelty = _Novelty()
+        lists: list[BestFirstOpenList] = [BestFirstOpenList(), BestFirstOpenList()]
+        if self.preferred:
+            lists.append(BestFirstOpenList())
+        turn = 0
+        closed = bytearray()
+        state = successors.task.init
+        facts = successors.facts(state)
+        if successors.is_goal(facts):
+            space.add(space.pack(state), NO_PARENT, None, 0)
+            return 0
+        h = estimator.estimate(state)
+        run.evaluated += 1
+        if h == math.inf:
+            run.dead_ends += 1
+            return None
+        number = space.add(space.pack(state), NO_PARENT, None, 0)
+        closed.append(0)
+        lists[0].push(h, number)
+        lists[1].push((novelty.of(state, h), h), number)
+        while any(lists):
+            while True:
+                turn = (turn + 1) % len(lists)
+                if lists[turn]:
+                    break
+            number = lists[turn].pop()
+            if closed[number]:
+                continue
+            closed[number] = 1
+            budget.check(run.expanded)
+            run.expanded += 1
+            state = space.state(number)
+            facts = successors.facts(state)
+            run.remember(number, state, facts)
+            if self.preferred:
+                _, preferred = estimator.estimate_with_preferred(state)
+                preferred_steps = set(preferred)
+            else:
+                preferred_steps = set()
+            for step in successors.applicable(facts):
+                budget.check(run.expanded)  # each child is evaluated: a slow h adds up
+                run.generated += 1
+                child, packed, g = run.child(number, step)
+                if packed in space.ids:
+                    continue
+                child_number = space.add(packed, number, step, g)
+                child_facts = successors.facts(child)
+                if successors.is_goal(child_facts):
+                    return child_number
+                child_h = estimator.estimate(child)
+                run.evaluated += 1
+                if child_h == math.inf:
+                    run.dead_ends += 1
+                    closed.append(1)
+                    continue
+                closed.append(0)
+                lists[0].push(child_h, child_number)
+                lists[1].push((novelty.of(child, child_h), child_h), child_number)
+                if step in preferred_steps:
+                    lists[2].push(child_h, child_number)
+        return None
+
+
+class _Novelty:
+    """Width-1 novelty partitioned by the estimate: 1 when the state holds an atom no
+    earlier state with the same estimate held, else 2."""
+
+    def __init__(self) -> None:
+        self._seen: dict[float, set] = {}
+
+    def of(self, state: LiftedState, h: float) -> int:
+        seen = self._seen.setdefault(h, set())
+        new = state - seen if len(seen) else state
+        if new:
+            seen.update(new)
+            return 1
+        return 2
