@@ -7,7 +7,7 @@ import json
 
 import pytest
 
-from strips_framework.cli import exit_codes
+from strips_framework import exit_codes
 from strips_framework.cli.main import main
 
 #: A problem for each status, and the exit code ``strips prove`` gives it.
