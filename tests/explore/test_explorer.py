@@ -177,12 +177,12 @@ def test_fields_a_strategy_adds_are_shown(monkeypatch):
     from strips_framework.means_ends.node import Node
 
     @attrs.define(eq=False)
-    class LevelNode(Node):
-        level: int = 0
+    class RankedNode(Node):
+        rank: int = 0
 
     node = record.result.tree.nodes[0]
-    mine = LevelNode(node.id, node.model, node.goals, None, level=2)
-    assert real(mine)["level"] == 2 and "level" not in real(node)
+    mine = RankedNode(node.id, node.model, node.goals, None, rank=2)
+    assert real(mine)["rank"] == 2 and "rank" not in real(node)
 
 
 def test_explorer_page_escapes_its_data():

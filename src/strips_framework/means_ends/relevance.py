@@ -21,7 +21,7 @@ from functools import cache
 from collections.abc import Iterator, Sequence
 from typing import ClassVar
 
-from attrs import field, frozen, validators
+from attrs import frozen
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Var, conjuncts
@@ -36,7 +36,7 @@ from strips_framework.logic.terms import (
 )
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
-from strips_framework.options import Configurable
+from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.operators import OperatorInstance, may_delete
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
@@ -70,7 +70,11 @@ class AddListRelevance(Configurable):
     name: ClassVar[str] = "add-list"
     capabilities: ClassVar[frozenset[str]] = frozenset()
 
-    rank: str = field(default="resolvent", validator=validators.in_(("resolvent", "cost")))
+    options = (
+        Option("rank", str, "resolvent", choices=("resolvent", "cost"),
+               doc="order relevant instances by the resolvent alone, or by what achieving them costs"),
+    )
+    rank: str
 
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel

@@ -217,7 +217,8 @@ class Config(Record):
         for table in tables:
             if table in self.chosen or table not in DEFAULTS:
                 continue
-            kinds = ("strategy", "ground-strategy") if table == "strategy" else (table,)
+            # A lifted strategy's [heuristic] default is the planner's (lifted heuristics).
+            kinds = STRATEGY_KINDS if table == "strategy" else (table,)
             name = default_name(registry, kinds, (choices[table].name, *DEFAULTS[table]))
             if name != choices[table].name:
                 choices[table] = Choice(table, name)

@@ -25,6 +25,7 @@ from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.node import Node
+from strips_framework.options import Configurable
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
@@ -34,8 +35,7 @@ MODELS_KEPT = 4096
 Binding = dict[object, object]
 
 
-@frozen
-class RelaxedMaxEvaluator:
+class RelaxedMaxEvaluator(Configurable):
     """A*'s ``g + h``: operators applied, plus the larger of two lower bounds.
 
     - The goal-list bound of ``astar-goals``: one application per goal above G0, one
