@@ -51,7 +51,7 @@ def test_string_shorthand(tmp_path):
 @pytest.mark.parametrize(("text", "message"), [
     ("[provr]\nname = 'x'\n", r"unknown key 'provr' \(expected one of: strategy, prover"),
     ("[strategy]\nmax_goal = 3\n",
-     r"unknown key 'strategy.max_goal': search strategy 'means-ends' has no option 'max_goal' \(options: max_goals\)"),
+     r"unknown key 'strategy.max_goal': search strategy 'means-ends' has no option 'max_goal' \(options: goal_agenda, max_goals\)"),
     ("[strategy]\nmax_goals = 0\n", r"bad value for 'strategy.max_goals': .*> 0.* \(got 0\)"),
     ("[strategy]\nmax_goals = 'many'\n",
      r"bad value for 'strategy.max_goals': expected an integer, got a string 'many'"),
