@@ -57,7 +57,8 @@ class MeansEndsRun:
             tuple[WorldModel, Formula], tuple[Difference, list[RelevantInstance] | None]
         ] = {}
         self.top_goal = Goal(problem.goal)
-        # The root's goal list: the goals of a plan made at a more abstract level, if
+        # The root's goal list: the goals of a plan made at a more abstract level, or
+        # the entries of a goal agenda (conjunctions of G0's atoms; no operator), if
         # any, then G0. Subgoaling depth (``max_goals``) and the dropping of goals a deeper
         # one makes unnecessary count only the goals pushed above them.
         self.start = (*planned, self.top_goal)
@@ -134,8 +135,11 @@ class MeansEndsRun:
             if not result.proved:
                 self._set_difference(node, result)
                 return None
-            if first.operator is None:
+            if first.operator is None and len(goals) == 1:
                 return node
+            if first.operator is None:  # a goal-agenda entry achieved: on to the next
+                goals, parent, applied = goals[1:], node, None
+                continue
             operator = first.operator.bind(dict(result.answers[0]))
             if not operator.is_ground or not operator.admits():
                 return None  # a parameter of the effects left unbound, or a binding refused

@@ -45,8 +45,11 @@ class MeansEndsSearch(Configurable):
     options = (
         Option("max_goals", int, 8, minimum=0, exclusive_minimum=True,
                doc="the longest goal list (depth of subgoaling)"),
+        Option("goal_agenda", bool, False,
+               doc="achieve G0's atoms in layers by reasonable orders (goal_order.py)"),
     )
     max_goals: int
+    goal_agenda: bool
 
     def search(
         self,
@@ -59,10 +62,14 @@ class MeansEndsSearch(Configurable):
         clock: Clock | None = None,
     ) -> Result:
         from strips_framework.limits import Clock
+        from strips_framework.means_ends.goal_order import goal_agenda
         from strips_framework.means_ends.goal_prover import GoalProver
+        from strips_framework.means_ends.node import Goal
         from strips_framework.means_ends.run import MeansEndsRun
 
+        agenda = goal_agenda(problem)[:-1] if self.goal_agenda else ()
         run = MeansEndsRun(self.max_goals, problem, GoalProver(problem, prover, limits.effort),
                            differences, relevance, evaluator, limits,
-                           clock or Clock(limits.time))
+                           clock or Clock(limits.time),
+                           planned=tuple(Goal(formula) for formula in agenda))
         return run.search()
