@@ -643,7 +643,8 @@ class Program(RuleProgram):
         for atom in body:
             variables = [t for t in atom.args if t in kinds]
             groups.setdefault(root(variables[0]) if variables else None, []).append(atom)
-        if len(groups) < 2 or not heads:
+        if sum(1 for key in groups if key is not None) < 2 or not heads:
+            # One part with variables (ground atoms match one fact each): nothing to gain.
             self._add(clause, params, heads, action, operator, cost, line, identity)
             return
         member = {name: root(name) for name in kinds}
@@ -678,23 +679,26 @@ class Program(RuleProgram):
             head = Atom(f"@part-{len(self.rules)}-{number}", tuple(kept))
             self._add(part, tuple(kinds[v] for v in kept), (head,), AXIOM, 0, 0, derivation=False)
             made.append((variables, head))
-        # One rule per head, over the parts projected to the variables it needs (as a
-        # ground operator achieves each of its adds at its own hadd cost).
-        for number, add in enumerate(heads):
+        # A rule per set of heads that need the same variables, over the parts projected
+        # to them (a ground operator achieves each of its adds at its own hadd cost).
+        by_need: dict[tuple[tuple[str, ...], ...], list[Atom]] = {}
+        for add in heads:
             wanted = shared | set(add.args)
+            need = tuple(tuple(v for v in part.args if v in wanted) for _, part in made)
+            by_need.setdefault(need, []).append(add)
+        for number, (need, adds) in enumerate(by_need.items()):
             joined: list[Atom] = []
             parts: dict[str, tuple[tuple[int, int], ...]] = {}
             hidden: set[str] = set()
-            for variables, part in made:
-                kept = [v for v in part.args if v in wanted]
-                hidden.update(v for v in variables if v not in wanted)
+            for (variables, part), kept in zip(made, need):
+                hidden.update(v for v in variables if v not in kept)
                 rest = [v for v in variables if v not in kept]
                 if len(kept) == len(part.args):
                     atom = part
                 else:  # project the part further: @part-N-i-h(kept) :- @part-N-i(...)
-                    atom = Atom(f"{part.predicate}-{number}", tuple(kept))
+                    atom = Atom(f"{part.predicate}-{number}", kept)
                     inner = [*part.args, *[v for v in variables if v not in part.args]]
-                    order = kept + rest
+                    order = list(kept) + rest
                     self._add(
                         Clause(tuple(kinds[v] for v in rest), (part,)),
                         tuple(kinds[v] for v in kept), (atom,), AXIOM, 0, 0, derivation=False,
@@ -710,7 +714,7 @@ class Program(RuleProgram):
                 tuple(a for positive, a in kept_tests if not positive),
             )
             self._add(
-                main, params, (add,), action, operator, cost, line, identity,
+                main, params, tuple(adds), action, operator, cost, line, identity,
                 hidden=frozenset(hidden), parts=parts,
             )  # fmt: skip
 
