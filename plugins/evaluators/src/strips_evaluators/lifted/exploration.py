@@ -96,12 +96,15 @@ class Exploration:
                     value += sum([cost[f] for f in body])
                 else:
                     value += max([cost[f] for f in body])
+            support = None  # made once, for the first head it improves
             for make in rule.makers:
                 head = make(slots)
                 old = cost_get(head)
                 if old is None or value < old:
+                    if support is None:
+                        support = (rule, tuple(matched), tuple(slots))
                     cost[head] = value
-                    supporter[head] = (rule, tuple(matched), tuple(slots))
+                    supporter[head] = support
                     heappush(heap, (value, head))
 
         while heap:
