@@ -25,7 +25,7 @@ from strips_evaluators.heuristics.ff import FFHeuristic
 from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
 from strips_evaluators.heuristics.hmax import MaxHeuristic
 from strips_evaluators.lifted.closure import DerivedClosure
-from strips_evaluators.lifted.exploration import Exploration, relaxed_plan
+from strips_evaluators.lifted.exploration import Exploration, action_instance, relaxed_plan
 from strips_evaluators.lifted.heuristics import (
     LiftedAdditive,
     LiftedFF,
@@ -104,7 +104,7 @@ def compare(task: PddlTask, limit: int) -> int:
         assert values["hmax"] <= ff <= values["hadd"]
         assert (ff == 0) == (values["hadd"] == 0) and (ff == math.inf) == (values["hadd"] == math.inf)
         equal_ff += ff == ground_h["ff"].estimate(state)
-        check_relaxed_plan(program, exploration, lifted, ff)
+        plan = check_relaxed_plan(program, exploration, lifted, ff)
         model = closure.model(lifted)
         assert {a for a in model if not a[0].startswith("@")} == lifted_state(
             grounded, state, changed | {rule.head.predicate for rule in task.domain.derived}
@@ -113,15 +113,26 @@ def compare(task: PddlTask, limit: int) -> int:
             name = "(" + " ".join((action, *args)) + ")"
             assert name in names
             assert any(op.name == name and op.applicable(state) for op in grounded.operators)
+        # The relaxed plan is made of the task's own rule instances (split rules rebuilt
+        # from their parts), and each action instance whose body holds is preferred.
+        assert not any(f[0].startswith("@part") for _, body, _ in plan for f in body)
+        expected = {
+            action_instance(program, rule, slots)
+            for rule, body, slots in plan
+            if rule.action != AXIOM and all(fact in model for fact in body)
+            and not any((n, *[slots[i] for i in terms]) in model for n, terms in rule.negative)
+        }
+        assert expected <= set(preferred)
     return equal_ff
 
 
-def check_relaxed_plan(program: Program, exploration: Exploration, state, value: float) -> None:
+def check_relaxed_plan(program: Program, exploration: Exploration, state, value: float) -> list:
+    """Checks the relaxed plan behind ``value``; its rule instances."""
     cost, supporter = exploration.costs(state, additive=True)
     total, plan = relaxed_plan(program, cost, supporter)
     assert total == value
     if value == math.inf:
-        return
+        return []
     achieved = set(state)
     for rule, body, slots in plan.values():
         achieved.update((name, *[slots[s] for s in terms]) for name, terms in rule.heads)
@@ -135,6 +146,7 @@ def check_relaxed_plan(program: Program, exploration: Exploration, state, value:
                 rule, list(slots)
             )
     assert sum(operators.values()) == value
+    return list(plan.values())
 
 
 @pytest.mark.parametrize("name", LOCAL)

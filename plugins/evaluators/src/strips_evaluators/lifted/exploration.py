@@ -96,12 +96,15 @@ class Exploration:
                     value += sum([cost[f] for f in body])
                 else:
                     value += max([cost[f] for f in body])
+            support = None  # made once, for the first head it improves
             for make in rule.makers:
                 head = make(slots)
                 old = cost_get(head)
                 if old is None or value < old:
+                    if support is None:
+                        support = (rule, tuple(matched), tuple(slots))
                     cost[head] = value
-                    supporter[head] = (rule, tuple(matched), tuple(slots))
+                    supporter[head] = support
                     heappush(heap, (value, head))
 
         while heap:
@@ -212,6 +215,8 @@ def relaxed_plan(
         support = supporter.get(subgoals.pop())
         if support is None:
             continue
+        if support[0].parts:
+            support = expand(support, supporter)
         rule, body, slots = support
         key = (rule.number, slots)
         if key in plan:
@@ -222,6 +227,27 @@ def relaxed_plan(
             operators[identity] = program.cost_of(rule, list(slots))
         subgoals.extend(body)
     return sum(operators.values()), plan
+
+
+def expand(support: Supporter, supporter: dict[GroundAtom, Supporter]) -> Supporter:
+    """The instance of the unsplit rule behind ``support`` of a split rule (see
+    :meth:`.program.Program._add_split`): its auxiliary body facts replaced by their
+    parts' body facts, and the slots the parts bound filled in from their supporters."""
+    rule, body, slots = support
+    if not rule.parts:
+        return support
+    full = list(slots)
+    facts: list[GroundAtom] = []
+    for fact in body:
+        pairs = rule.parts.get(fact[0])
+        if pairs is None:
+            facts.append(fact)
+            continue
+        _, part_body, part_slots = expand(supporter[fact], supporter)
+        for part_slot, rule_slot in pairs:
+            full[rule_slot] = part_slots[part_slot]
+        facts.extend(part_body)
+    return rule, tuple(facts), tuple(full)
 
 
 def action_instance(program: RuleProgram, rule: Rule, slots: tuple[str, ...]) -> ActionInstance:

@@ -173,10 +173,14 @@ class Rule(Record):
     #: Per head, a function from the slot list to the ground head (an ``itemgetter``
     #: over the slots: the head's predicate name is a slot too).
     makers: tuple[Callable[[list], GroundAtom], ...]
+    #: Per auxiliary body predicate (see :meth:`Program._add_split`), the pairs
+    #: ``(part slot, rule slot)`` that carry the part's binding back into this rule's
+    #: slots: the part binds the variables this rule does not join over.
+    parts: dict[str, tuple[tuple[int, int], ...]]
 
     __slots__ = (
         "number", "template", "heads", "negative", "action", "arity", "operator", "identity", "cost",
-        "cost_term", "repeated_predicates", "makers",
+        "cost_term", "repeated_predicates", "makers", "parts",
     )  # fmt: skip
 
     def __init__(
@@ -193,6 +197,7 @@ class Rule(Record):
         cost_term: tuple[str, tuple[int, ...]],
         repeated_predicates: bool,
         makers: tuple[Callable[[list], GroundAtom], ...],
+        parts: dict[str, tuple[tuple[int, int], ...]] | None = None,
     ) -> None:
         self.number = number
         self.template = template
@@ -206,6 +211,7 @@ class Rule(Record):
         self.cost_term = cost_term
         self.repeated_predicates = repeated_predicates
         self.makers = makers
+        self.parts = parts or {}
 
 
 class RuleProgram:
@@ -286,10 +292,16 @@ class RuleProgram:
         cost: int | Atom,
         line: int | None = None,
         identity: int | None = None,
+        hidden: frozenset[str] = frozenset(),
+        parts: dict[str, tuple[tuple[int, int], ...]] | None = None,
+        derivation: bool = True,
     ) -> None:
         """A rule for ``clause`` (over ``params`` and its own variables) with these
         ``heads``, for ``action`` (or :data:`AXIOM`) at ``cost``: a number, or a numeric
-        function term over the rule's variables (``line`` locates it in messages)."""
+        function term over the rule's variables (``line`` locates it in messages).
+        ``hidden`` variables are bound by the auxiliary body atoms' ``parts``, not by this
+        rule's joins; a rule that is not a ``derivation`` is left out of the exact
+        evaluation of derived predicates."""
         everything = params + clause.params
         slot = {param.name: i for i, param in enumerate(everything)}
         mentioned = [arg for atom in (*clause.positive, *clause.negative, *heads) for arg in atom.args]
@@ -314,6 +326,8 @@ class RuleProgram:
             if a.predicate in self.static
         ]
         for i, param in enumerate(everything):
+            if param.name in hidden:
+                continue
             domain = frozenset(self.objects_of(param.types))
             if domain != self.objects:
                 checks.append(Check("type", (i,), domain=domain))
@@ -341,17 +355,20 @@ class RuleProgram:
                 _maker(a.predicate, names[a.predicate], tuple(slot[arg] for arg in a.args))
                 for a in heads
             ),
+            parts=parts,
         )
         self.rules.append(rule)
         atoms = [(a.predicate, tuple(slot[arg] for arg in a.args)) for a in body]
         domains = {i: self.objects_of(p.types) for i, p in enumerate(everything)}
+        # Hidden variables count as bound: the plans never enumerate them.
+        variables = [i for i, p in enumerate(everything) if p.name not in hidden]
         fluent = [i for i, (predicate, _) in enumerate(atoms) if predicate not in self.static]
-        if action == AXIOM:
-            self.derivations.append(self._plan(rule, atoms, None, checks, domains, len(everything)))
+        if action == AXIOM and derivation:
+            self.derivations.append(self._plan(rule, atoms, None, checks, domains, variables))
         if not fluent:
-            self.unconditional.append(self._plan(rule, atoms, None, checks, domains, len(everything)))
+            self.unconditional.append(self._plan(rule, atoms, None, checks, domains, variables))
         for position in fluent:
-            plan = self._plan(rule, atoms, position, checks, domains, len(everything))
+            plan = self._plan(rule, atoms, position, checks, domains, variables)
             self.triggers.setdefault(atoms[position][0], []).append(plan)
 
     def _plan(
@@ -361,7 +378,7 @@ class RuleProgram:
         trigger: int | None,
         checks: list[Check],
         domains: dict[int, tuple[str, ...]],
-        variables: int,
+        variables: list[int],
     ) -> Plan:
         """The join order: the trigger first, then greedily the atom with the fewest
         expected candidates: none for an atom whose arguments are all bound (a test),
@@ -371,7 +388,7 @@ class RuleProgram:
         its unbound variables' domain sizes (what exploration may reach), and their
         geometric mean is the estimate. Static atoms go first among equals: they filter
         without growing."""
-        bound = set(range(variables, len(rule.template)))  # constants
+        bound = set(range(len(domains), len(rule.template)))  # constants
         pending = list(checks)
         first = None
         if trigger is not None:
@@ -406,7 +423,7 @@ class RuleProgram:
             before = trigger is not None and is_fluent and best < trigger
             bound_before.append(set(bound))
             steps.append(self._step(atoms[best], bound, pending, is_fluent, before))
-        free = tuple(i for i in range(variables) if i not in bound)
+        free = tuple(i for i in variables if i not in bound)
         probes: list[tuple[int, ...]] = []
         probed: set[int] = set()
         for depth, known in enumerate(bound_before):
@@ -510,12 +527,12 @@ class Program(RuleProgram):
         for number, action in enumerate(task.domain.actions):
             for operator, clause in enumerate(normalizer.clauses(action.precondition)):
                 cost = self._action_cost(action)
-                self._add(clause, action.params, action.add, number, operator, cost, action.line)
+                self._add_split(clause, action.params, action.add, number, operator, cost, action.line)
                 for effect in action.conditional:
                     if not effect.add:
                         continue
                     for condition in normalizer.clauses(effect.condition):
-                        self._add(
+                        self._add_split(
                             clause.join(Clause(effect.params)).join(condition),
                             action.params,
                             effect.add,
@@ -552,6 +569,154 @@ class Program(RuleProgram):
         )
         self.fluent_goal = tuple(fact for fact in self.goal if fact[0] not in self.static)
         self._index_static_facts()
+
+    def _add_split(
+        self,
+        clause: Clause,
+        params: tuple[Parameter, ...],
+        heads: tuple[Atom, ...],
+        action: int,
+        operator: int,
+        cost: int | Atom,
+        line: int | None = None,
+        identity: int | None = None,
+    ) -> None:
+        """An action's rule, split as lifted planners split Datalog rules when its body
+        falls into parts that share no variable: each part becomes an auxiliary zero-cost
+        rule whose head ``(@part-N-i ...)`` keeps only the part's variables the heads,
+        the cost or a test across parts needs, and the rule joins those heads. Joining
+        the parts separately costs the sum of their matches instead of the product, and
+        a part's other variables are projected away.
+
+        The auxiliary head's hadd (hmax) cost is the sum (maximum) of its part's body
+        costs, so the rule's instance costs what the unsplit rule's would, as long as no
+        fact can match atoms of two parts (the unsplit rule counts such a fact once):
+        a rule with atoms of a fluent predicate in two parts that could match the same fact
+        (no position that distinct constants, disjoint types or an inequality keeps
+        apart) is kept whole. The relaxed plan rebuilds the full action instance from the parts'
+        supporters (:func:`.exploration.expand`)."""
+        everything = params + clause.params
+        kinds = {p.name: p for p in everything}
+        parent = {name: name for name in kinds}
+
+        def root(name: str) -> str:
+            while parent[name] != name:
+                name = parent[name]
+            return name
+
+        def union(names: Iterable[str]) -> None:
+            names = [root(n) for n in names if n in kinds]
+            for name in names[1:]:
+                parent[name] = names[0]
+
+        body = [a for a in clause.positive if a.predicate != "="]
+        for atom in clause.positive:
+            union(atom.args)
+        unequal = {
+            frozenset(a.args) for a in clause.negative if a.predicate == "=" and len(set(a.args)) == 2
+        }
+
+        def apart(first: Atom, second: Atom) -> bool:
+            for x, y in zip(first.args, second.args):
+                if x == y:
+                    continue
+                if frozenset((x, y)) in unequal:
+                    return True
+                domains = [
+                    set(self.objects_of(kinds[t].types)) if t in kinds else {t} for t in (x, y)
+                ]
+                if not domains[0] & domains[1]:
+                    return True
+            return False
+
+        for i, first in enumerate(body):
+            for second in body[i + 1:]:
+                if first.predicate != second.predicate or first.predicate in self.static:
+                    continue
+                ours = {root(t) for t in first.args if t in kinds}
+                if ours != {root(t) for t in second.args if t in kinds} and not apart(first, second):
+                    # The parts could share a fact, which the rule counts once: keep it whole
+                    # (joined as one part, they would enumerate the product of their matches).
+                    self._add(clause, params, heads, action, operator, cost, line, identity)
+                    return
+        groups: dict[str | None, list[Atom]] = {}
+        for atom in body:
+            variables = [t for t in atom.args if t in kinds]
+            groups.setdefault(root(variables[0]) if variables else None, []).append(atom)
+        if sum(1 for key in groups if key is not None) < 2 or not heads:
+            # One part with variables (ground atoms match one fact each): nothing to gain.
+            self._add(clause, params, heads, action, operator, cost, line, identity)
+            return
+        member = {name: root(name) for name in kinds}
+        # The variables every head's rule needs: the cost's and those of tests across parts.
+        shared = set(cost.args) if isinstance(cost, Atom) else set()
+        kept_tests: list[tuple[bool, Atom]] = []
+        part_tests: dict[str | None, list[tuple[bool, Atom]]] = {}
+        for positive, atom in [(True, a) for a in clause.positive if a.predicate == "="] + [
+            (False, a) for a in clause.negative
+        ]:
+            owners = {member[t] for t in atom.args if t in kinds}
+            fluent = not positive and atom.predicate != "=" and atom.predicate not in self.static
+            if not fluent and len(owners) == 1 and next(iter(owners)) in groups:
+                part_tests.setdefault(next(iter(owners)), []).append((positive, atom))
+            else:
+                kept_tests.append((positive, atom))
+                if not fluent:
+                    shared.update(atom.args)
+        needed = shared | {t for a in heads for t in a.args}
+        slot = {p.name: i for i, p in enumerate(everything)}
+        # Per part: its variables, the auxiliary atom over those some head needs.
+        made: list[tuple[list[str], Atom]] = []
+        for number, (key, atoms) in enumerate(groups.items()):
+            variables = [v for v in kinds if key is not None and member[v] == key]
+            kept = [v for v in variables if v in needed]
+            own = part_tests.get(key, [])
+            part = Clause(
+                tuple(kinds[v] for v in variables if v not in needed),
+                tuple(atoms) + tuple(a for positive, a in own if positive),
+                tuple(a for positive, a in own if not positive),
+            )
+            head = Atom(f"@part-{len(self.rules)}-{number}", tuple(kept))
+            self._add(part, tuple(kinds[v] for v in kept), (head,), AXIOM, 0, 0, derivation=False)
+            made.append((variables, head))
+        # A rule per set of heads that need the same variables, over the parts projected
+        # to them (a ground operator achieves each of its adds at its own hadd cost).
+        by_need: dict[tuple[tuple[str, ...], ...], list[Atom]] = {}
+        for add in heads:
+            wanted = shared | set(add.args)
+            need = tuple(tuple(v for v in part.args if v in wanted) for _, part in made)
+            by_need.setdefault(need, []).append(add)
+        for number, (need, adds) in enumerate(by_need.items()):
+            joined: list[Atom] = []
+            parts: dict[str, tuple[tuple[int, int], ...]] = {}
+            hidden: set[str] = set()
+            for (variables, part), kept in zip(made, need):
+                hidden.update(v for v in variables if v not in kept)
+                rest = [v for v in variables if v not in kept]
+                if len(kept) == len(part.args):
+                    atom = part
+                else:  # project the part further: @part-N-i-h(kept) :- @part-N-i(...)
+                    atom = Atom(f"{part.predicate}-{number}", kept)
+                    inner = [*part.args, *[v for v in variables if v not in part.args]]
+                    order = list(kept) + rest
+                    self._add(
+                        Clause(tuple(kinds[v] for v in rest), (part,)),
+                        tuple(kinds[v] for v in kept), (atom,), AXIOM, 0, 0, derivation=False,
+                        hidden=frozenset(v for v in variables if v not in part.args),
+                        parts={part.predicate: tuple((i, order.index(v)) for i, v in enumerate(inner))},
+                    )  # fmt: skip
+                inner = [*atom.args, *[v for v in variables if v not in atom.args]]
+                parts[atom.predicate] = tuple((i, slot[v]) for i, v in enumerate(inner))
+                joined.append(atom)
+            main = Clause(
+                clause.params,
+                tuple(joined) + tuple(a for positive, a in kept_tests if positive),
+                tuple(a for positive, a in kept_tests if not positive),
+            )
+            self._add(
+                main, params, tuple(adds), action, operator, cost, line, identity,
+                hidden=frozenset(hidden), parts=parts,
+            )  # fmt: skip
 
     def _action_cost(self, action: Action) -> int | Atom:
         """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
