@@ -6,8 +6,8 @@ constants are; most of those instances are idle, though. The robot world's
 eight can ever fire. :class:`Relevance` keeps the set P of ground atoms that can hold: the
 least set holding the positive atoms of every instance whose negative atoms are all in P
 (semi-naive forward instantiation from the facts, as a Datalog engine computes a least
-model, but over the clauses' atoms whatever their sign of head). Only those instances
-are asserted.
+model, with every positive atom of a clause taken as a head). Only those instances are
+asserted.
 
 Why no answer changes (equality aside): given a model M of the asserted instances (and of
 the goal's instances, whose positive atoms are put in P too), read it over the constants

@@ -121,7 +121,8 @@ class GroundSession:
                 elif positive:
                     terms = [t for t in atom[1:] if type(t) is int]
                     for values in product(self.universe, repeat=len(terms)):
-                        self.relevance.note(_instance(atom, {**binding, **dict(zip(terms, values))}))
+                        instance = {**binding, **dict(zip(terms, values))}
+                        self.relevance.note(_instance(atom, instance))
         self._propagate(batch)
         self.add(batch)
 
