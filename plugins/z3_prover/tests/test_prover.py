@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pytest
 from strips_z3_prover import Z3Prover
+from strips_z3_prover.session import GroundSession
 
 from strips_framework.errors import ConfigError
 from strips_framework.logic.clauses import Clause
@@ -15,6 +16,7 @@ from strips_framework.plugin.config import Config
 from strips_framework.testing.prover_cases import pigeonhole
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, ProofTask
 from strips_framework.worldmodel.simulate import replay
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 M, N = Param("m"), Param("n")
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
@@ -165,3 +167,39 @@ def test_means_ends_with_z3_solves_the_papers_tasks(problem: str, nodes: int) ->
     # The node counts of the resolution prover (tests/test_paper_tasks.py): the same
     # differences, so the same search.
     assert result.statistics.nodes == nodes
+
+
+def test_a_session_grounds_only_the_instances_whose_conditions_can_hold() -> None:
+    # Symmetry over 20 constants has 8,000 instances; two facts make four relevant.
+    session = GroundSession(0)
+    session.admit([f"c{i}" for i in range(17)] + ["d", "r1", "r2"])
+    session.selector(Clause([pos("C", "d", "r1", "r2")]))
+    session.selector(Clause([neg("C", 0, 1, 2), pos("C", 0, 2, 1)]))
+    (_, rule) = session.relevance.rules
+    assert rule.done == {("d", "r1", "r2"), ("d", "r2", "r1")}
+
+
+def test_a_fact_arriving_later_fires_the_rules_asserted_before() -> None:
+    # The session's second model adds Q(a): the chain Q -> R -> S must fire then.
+    prover = Z3Prover()
+    rules = clauses([neg("Q", 0), pos("R", 0)], [neg("R", 0), pos("S", 0)], [pos("P", "b")])
+    session = prover.open(InitialModel(rules), False)
+    goal = clauses([neg("S", M)])
+    assert not session.prove(WorldModel(InitialModel(rules)), goal, 300).proved
+    later = InitialModel((*rules, Clause([pos("Q", "a")])))
+    assert session.prove(WorldModel(later), goal, 300).answers == (((M, "a"),),)
+
+
+def test_a_goals_positive_atoms_count_as_possible(prover: Z3Prover) -> None:
+    # "R(a) is false" follows: R(a) would give S(a), which is false.
+    axioms = clauses([neg("R", 0), pos("S", 0)], [neg("S", "a")])
+    assert prover.prove(ProofTask(axioms, clauses([pos("R", "a")]))).proved
+
+
+def test_an_equation_grounds_every_instance(prover: Z3Prover) -> None:
+    # Q(a), T(b) and a = b: no instance of the rule has both conditions among the facts.
+    axioms = clauses(
+        [pos("Q", "a")], [pos("T", "b")], [pos("=", "a", "b")],
+        [neg("Q", 0), neg("T", 0), pos("R", 0)],
+    )
+    assert prover.prove(ProofTask(axioms, clauses([neg("R", "a")]))).proved

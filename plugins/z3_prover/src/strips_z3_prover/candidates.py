@@ -23,6 +23,7 @@ import z3
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import EQUALITY, Param, Term
 from strips_z3_prover.encoding import Vocabulary
+from strips_z3_prover.relevance import Relevance
 
 Element = int  # a model element, by the id of its Z3 value
 Table = frozenset[tuple[Element, ...]]  # the tuples where a predicate is true
@@ -37,20 +38,30 @@ class ModelTruth:
         vocabulary: Vocabulary,
         universe: Sequence[str],
         answers: Sequence[str],
+        relevance: Relevance | None = None,
     ) -> None:
         """``universe`` holds the constants the variables range over, ``answers`` the
-        named ones parameters may be bound to."""
+        named ones parameters may be bound to. With ``relevance`` (a ground session's,
+        without positive equations) the model is read as the relevance argument reads
+        it: each constant its own element, the atoms that cannot hold false. That is a
+        model of every ground instance, with tables no larger than the atoms that can
+        hold, where Z3 is free to make the atoms no asserted instance names true."""
         self.model = model
         self.vocabulary = vocabulary
         # Elements are compared by AST id, which Z3 reuses once an AST is freed: the
         # values stay referenced here for as long as the ids are used.
         self._values = [model.eval(vocabulary.constant(name), True) for name in universe]
         self.value = {name: value.get_id() for name, value in zip(universe, self._values)}
-        self.elements = sorted(set(self.value.values()))
-        self.names: dict[Element, list[str]] = {}
+        self.elements = self._z3_elements = sorted(set(self.value.values()))
         self._representative: dict[Element, z3.ExprRef] = {}
         for name in universe:
             self._representative.setdefault(self.value[name], vocabulary.constant(name))
+        self._relevance = relevance if relevance is not None and not relevance.everything else None
+        self._z3_value = self.value
+        if self._relevance is not None:
+            self.value = {name: i for i, name in enumerate(universe)}
+            self.elements = list(range(len(universe)))
+        self.names: dict[Element, list[str]] = {}
         for name in answers:
             self.names.setdefault(self.value[name], []).append(name)
         self._tables: dict[tuple[str, int], Table] = {}
@@ -60,7 +71,16 @@ class ModelTruth:
         key = (predicate, arity)
         found = self._tables.get(key)
         if found is None:
-            found = self._tables[key] = self._read_table(predicate, arity)
+            found = self._read_table(predicate, arity)
+            relevance = self._relevance
+            if relevance is not None:
+                z3_value, value = self._z3_value, self.value
+                found = frozenset(
+                    tuple(value[n] for n in row)
+                    for row in relevance.atoms.get(key, ())
+                    if all(n in value for n in row) and tuple(z3_value[n] for n in row) in found
+                )
+            self._tables[key] = found
         return found
 
     def _read_table(self, predicate: str, arity: int) -> Table:
@@ -87,11 +107,11 @@ class ModelTruth:
             if z3.is_false(default):
                 return frozenset(row for row, true in listed.items() if true)
             return frozenset(
-                row for row in product(self.elements, repeat=arity) if listed.get(row, True)
+                row for row in product(self._z3_elements, repeat=arity) if listed.get(row, True)
             )
         return frozenset(
             row
-            for row in product(self.elements, repeat=arity)
+            for row in product(self._z3_elements, repeat=arity)
             if z3.is_true(self.model.eval(symbol(*[self._representative[e] for e in row]), True))
         )
 

@@ -118,7 +118,10 @@ class _Attempt:
         candidates = [
             atom
             for atom in self.first.true_atoms(predicates)
-            if atom not in facts and any(unify(goal, atom, {}) is not None for goal in goal_atoms)
+            # An atom that cannot hold (relevance) is true only by the model's whim.
+            if atom not in facts
+            and self.session.relevance.possible(atom)
+            and any(unify(goal, atom, {}) is not None for goal in goal_atoms)
         ]
         batch = self.session.batch()
         for i, atom in enumerate(candidates):
@@ -142,7 +145,10 @@ class _Attempt:
         return tuple(lemmas)
 
     def _truth(self, model: z3.ModelRef) -> ModelTruth:
-        return ModelTruth(model, self.session.vocabulary, self.session.universe, self.named)
+        session = self.session
+        return ModelTruth(
+            model, session.vocabulary, session.universe, self.named, session.relevance
+        )
 
     def _refute(
         self, clauses: Sequence[Clause], binding: dict[Param, str]
@@ -150,6 +156,7 @@ class _Attempt:
         """Check the axioms with the instances of ``clauses`` under ``binding``; the
         countermodel when there is one."""
         session, solver = self.session, self.session.solver
+        session.expect(clauses, binding)
         batch = session.batch()
         session.write_instances(batch, clauses, binding)
         session.declare(batch)

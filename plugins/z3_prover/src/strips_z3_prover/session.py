@@ -9,9 +9,12 @@ asserting it the first time it is seen. The goal's instances are pushed and popp
 
 Grounding is over the *universe*: every constant the session has seen. Constants are
 admitted before clauses, and admitting one instantiates every clause already asserted on
-it, so each clause always has all its instances over the universe. For clauses without
-function symbols this is exactly Herbrand's theorem: the clauses are unsatisfiable iff
-their instances over the constants are (with Z3's equality for ``=``). Unique names are
+it. For clauses without function symbols Herbrand's theorem makes the clauses
+unsatisfiable iff their instances over the constants are (with Z3's equality for ``=``);
+of those instances a session asserts only the ones whose negative atoms can all hold
+(:mod:`strips_z3_prover.relevance`), found forward from the facts as clauses, constants
+and goals arrive, which decides the same questions with a few hundred instances where
+the whole universe gives tens of thousands. Unique names are
 a ``Distinct`` over the task's own non-Skolem constants, behind a selector per set of
 constants: constants the session kept from other tasks stay unconstrained, so they can
 always be read as one of the task's objects and change no task's answer.
@@ -19,7 +22,7 @@ always be read as one of the task's objects and change no task's answer.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Sequence
 from itertools import product
 
 import z3
@@ -27,6 +30,7 @@ import z3
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_z3_prover.encoding import Vocabulary, clause_variables
+from strips_z3_prover.relevance import Binding, Relevance, Rule, is_equation
 from strips_z3_prover.smtlib import Batch
 
 #: Grounding needs a non-empty universe; Skolem-prefixed, so never a witness.
@@ -47,17 +51,18 @@ class GroundSession:
         self.universe: list[str] = []
         self._known: set[str] = set()
         self._selectors: dict[Clause, z3.BoolRef] = {}
-        self._open: list[tuple[Clause, list[int], str]] = []
+        self.relevance = Relevance()
         self._distinct: dict[tuple[str, ...], z3.BoolRef] = {}
         self._declared: set[str] = set()
         self.solver.from_string("(declare-sort U 0)")
 
     def instances_needed(self, clauses: Iterable[Clause], constants: set[str]) -> int:
-        """How many ground instances adding ``clauses`` and ``constants`` would assert."""
+        """At most how many ground instances adding ``clauses`` and ``constants`` would
+        assert (every instance over the universe: relevance only ever asserts fewer)."""
         size = len(self._known | constants)
         growth = sum(
-            size ** len(variables) - len(self.universe) ** len(variables)
-            for _, variables, _ in self._open
+            size ** len(rule.variables) - len(self.universe) ** len(rule.variables)
+            for rule in self.relevance.rules
         )
         fresh = (c for c in dict.fromkeys(clauses) if c not in self._selectors)
         return growth + sum(size ** len(clause_variables(c)) for c in fresh)
@@ -67,13 +72,12 @@ class GroundSession:
         new = sorted(set(constants) - self._known)
         if not new:
             return
-        old = len(self.universe)
         self.universe.extend(new)
         self._known.update(new)
         batch = self.batch()
-        for clause, variables, selector in self._open:
-            for values in _tuples_using_new(self.universe, old, len(variables)):
-                batch.assert_clause(clause, dict(zip(variables, values)), selector)
+        for rule in self.relevance.rules:
+            self._ground(batch, rule)
+        self._propagate(batch)
         self.add(batch)
 
     def distinct(self, names: Sequence[str]) -> z3.BoolRef:
@@ -88,20 +92,62 @@ class GroundSession:
         return found
 
     def selector(self, clause: Clause) -> z3.BoolRef:
-        """The selector of ``clause``, asserting its instances the first time."""
+        """The selector of ``clause``, asserting its relevant instances the first time."""
         found = self._selectors.get(clause)
         if found is not None:
             return found
         name = f"s!{len(self._selectors)}"
         selector = z3.Bool(name, self.vocabulary.context)
         self._selectors[clause] = selector
-        variables = sorted(clause_variables(clause))
+        rule = Rule(clause, name)
+        self.relevance.add_rule(rule)
         batch = self.batch()
-        self.write_instances(batch, [clause], {}, name)
+        if rule.equates:
+            self._everything(batch)
+        self._ground(batch, rule)
+        self._propagate(batch)
         self.add(batch)
-        if variables:
-            self._open.append((clause, variables, name))
         return selector
+
+    def expect(self, clauses: Sequence[Clause], binding: dict[Param, str]) -> None:
+        """Make the positive atoms of the goal's instances ``clauses`` under ``binding``
+        possible (a model may need them true), asserting the instances that then become
+        relevant; outside any push scope, since they stay valid for later tasks."""
+        batch = self.batch()
+        for clause in clauses:
+            for positive, atom in clause.literals:
+                if positive and is_equation(atom):
+                    self._everything(batch)
+                elif positive:
+                    terms = [t for t in atom[1:] if type(t) is int]
+                    for values in product(self.universe, repeat=len(terms)):
+                        instance = {**binding, **dict(zip(terms, values))}
+                        self.relevance.note(_instance(atom, instance))
+        self._propagate(batch)
+        self.add(batch)
+
+    def _ground(self, batch: Batch, rule: Rule, seed: tuple | None = None) -> None:
+        """Write the instances of ``rule`` that became relevant, noting their conclusions."""
+        for binding in self.relevance.bindings(rule, self.universe, seed):
+            key = tuple(binding[v] for v in rule.variables)
+            if key in rule.done:
+                continue
+            rule.done.add(key)
+            batch.assert_clause(rule.clause, binding, rule.selector)
+            for atom in rule.conclusions:
+                self.relevance.note(_instance(atom, binding))
+
+    def _propagate(self, batch: Batch) -> None:
+        """Fire the rules on the atoms newly possible until none is (semi-naive)."""
+        for rule, atom in self.relevance.fresh_pairs():
+            self._ground(batch, rule, atom)
+
+    def _everything(self, batch: Batch) -> None:
+        """From now on assert every instance over the universe (a positive equation)."""
+        if not self.relevance.everything:
+            self.relevance.everything = True
+            for rule in self.relevance.rules:
+                self._ground(batch, rule)
 
     def write_instances(
         self,
@@ -134,9 +180,5 @@ class GroundSession:
             self.solver.from_string(text)
 
 
-def _tuples_using_new(universe: list[str], old: int, arity: int) -> Iterator[tuple[str, ...]]:
-    """The ``arity``-tuples over ``universe`` with at least one of its elements from
-    index ``old`` on (the tuples over the first ``old`` were instantiated before)."""
-    for values in product(range(len(universe)), repeat=arity):
-        if any(i >= old for i in values):
-            yield tuple(universe[i] for i in values)
+def _instance(atom: tuple, binding: Binding) -> tuple:
+    return (atom[0], *(binding.get(t, t) for t in atom[1:]))
