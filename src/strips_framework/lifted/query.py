@@ -11,6 +11,11 @@ negated atoms and inequalities as soon as their variables are bound, and project
 answer variables. Facts are filed in sorted order, so no answer's order, and so no
 search, depends on hash order.
 
+A successor's fact base is made from its parent's and the few atoms the action changed
+(:meth:`FactBase.changed`): the lists, relations and indexes of the predicates it did not
+touch are shared, those it touched are copied and updated at the changed atoms only, so
+that making it costs what the action touches rather than what the state holds.
+
 An acyclic query (a join tree exists, found by GYO reduction) is answered the Yannakakis
 way: semi-joins up and down the tree first remove every tuple that takes part in no
 answer, so no join step makes a tuple the next one throws away. A cyclic query is joined
@@ -21,7 +26,8 @@ a relation is built once per relation (so once per task for a static one).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from bisect import bisect_left, insort
+from collections.abc import Collection, Iterable, Sequence
 from operator import itemgetter
 from typing import Protocol
 
@@ -59,6 +65,33 @@ class Relation:
             self._indexes[positions] = found
         return found
 
+    def changed(self, removed: Sequence[Row], added: Sequence[Row]) -> Relation:
+        """This relation less the rows ``removed`` (which it holds) and with the rows
+        ``added`` (which it lacks), rows and built indexes kept in their sorted filing
+        order: the same relation as one matched from scratch, in time linear in the
+        changes plus a copy of the rows and of the touched index buckets."""
+        rows = list(self.rows)
+        for row in removed:
+            del rows[bisect_left(rows, row)]
+        for row in added:
+            insort(rows, row)
+        child = Relation(self.columns, rows)
+        for positions, index in self._indexes.items():
+            copy = dict(index)
+            key = _getter(positions)
+            for row in removed:
+                k = key(row)
+                bucket = copy[k] = list(copy[k])
+                del bucket[bisect_left(bucket, row)]
+                if not bucket:
+                    del copy[k]
+            for row in added:
+                k = key(row)
+                bucket = copy[k] = list(copy.get(k, ()))
+                insort(bucket, row)
+            child._indexes[positions] = copy
+        return child
+
 
 def _getter(positions: Sequence[int]):  # noqa: ANN202 - itemgetter or a lambda
     """A function from a row to its values at ``positions``: a single value for one
@@ -92,7 +125,7 @@ class FactBase:
             else:
                 found.append(atom)
         self._by_predicate = by_predicate
-        self._relations: dict[object, Relation] = {}
+        self._relations: dict[object, tuple[Pattern, Relation]] = {}
         self.static = static
         self._static_predicates = static_predicates
 
@@ -113,16 +146,57 @@ class FactBase:
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
         return new
 
+    def changed(self, removed: Collection[GroundAtom], added: Collection[GroundAtom]) -> FactBase:
+        """The fact base of the state this one's differs from by ``removed`` (atoms it
+        holds) and ``added`` (atoms it lacks), neither of a static predicate; equal to
+        one made from scratch (same filing order, same relations) when this one holds no
+        atoms added by :meth:`add`. The predicates it does not touch share this one's
+        lists and relations."""
+        child = FactBase.__new__(FactBase)
+        child.atoms = (self.atoms - removed) if removed else set(self.atoms)
+        child.atoms.update(added)
+        child.static = self.static
+        child._static_predicates = self._static_predicates
+        by_predicate = dict(self._by_predicate)
+        touched: dict[tuple[str, int], tuple[list[GroundAtom], list[GroundAtom]]] = {}
+        for atom in removed:
+            touched.setdefault((atom[0], len(atom)), ([], []))[0].append(atom)
+        for atom in added:
+            touched.setdefault((atom[0], len(atom)), ([], []))[1].append(atom)
+        for key, (out, into) in touched.items():
+            atoms = list(by_predicate.get(key, ()))
+            for atom in out:
+                del atoms[bisect_left(atoms, atom)]
+            for atom in into:
+                insort(atoms, atom)
+            by_predicate[key] = atoms
+        child._by_predicate = by_predicate
+        relations = {}
+        for key, (pattern, relation) in self._relations.items():
+            change = touched.get((pattern.predicate, pattern.size))
+            if change is None:
+                relations[key] = (pattern, relation)
+            elif not pattern.columns:  # a ground atom (every position a check): held or not
+                ground = (pattern.predicate, *[value for _, value in pattern.checks])
+                relations[key] = (pattern, Relation((), [()] if ground in child.atoms else []))
+            else:
+                out = [row for row in map(pattern.row, change[0]) if row is not None]
+                into = [row for row in map(pattern.row, change[1]) if row is not None]
+                relations[key] = (pattern, relation.changed(out, into) if out or into else relation)
+        child._relations = relations
+        return child
+
     def relation(self, pattern: Pattern) -> Relation:
         """The atoms matching ``pattern`` as rows over its variables."""
         if self.static is not None and pattern.predicate in self._static_predicates:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
         if found is None:
-            found = self._relations[pattern.key] = pattern.match(
-                self._by_predicate.get((pattern.predicate, pattern.size), ())
+            found = self._relations[pattern.key] = (
+                pattern,
+                pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ())),
             )
-        return found
+        return found[1]
 
 
 class Pattern:
@@ -172,6 +246,20 @@ class Pattern:
         else:
             rows = [()] if candidates else []
         return Relation(self.columns, rows)
+
+    def row(self, atom: GroundAtom) -> Row | None:
+        """The row ``atom`` (of the pattern's predicate and arity) gives, None when it
+        does not match; :meth:`match` of a single atom."""
+        for position, value in self.checks:
+            if atom[position] != value:
+                return None
+        for position, earlier in self.repeats:
+            if atom[position] != atom[earlier]:
+                return None
+        for position, domain in self.typed:
+            if atom[position] not in domain:
+                return None
+        return tuple(atom[p] for p in self.taken)
 
 
 class QueryEngine(Protocol):

@@ -21,7 +21,7 @@ from typing import ClassVar
 
 from strips_framework.forward.budget import Budget, peak_mib
 from strips_framework.forward.openlists import AlternationOpenList, BestFirstOpenList, open_list
-from strips_framework.lifted.components import ActionInstance, LiftedEstimator, LiftedState
+from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedEstimator, LiftedState
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
 from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
@@ -29,6 +29,9 @@ from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.options import Configurable, Option
 from strips_framework.result import Result, Status
+
+#: How many recent states' fact bases a run keeps (see :attr:`LiftedRun._recent`).
+RECENT = 256
 
 
 class LiftedRun:
@@ -46,30 +49,48 @@ class LiftedRun:
         self.evaluated = 0
         self.generated = 0
         self.dead_ends = 0
-        #: The state last expanded, its number and fact base: lazy search pops its
-        #: successors next, and the conditions of their effects are read in it.
-        self._parent: tuple[int, LiftedState, FactBase | None] = (NO_PARENT, frozenset(), None)
+        #: The states (and fact bases) last expanded or generated, oldest first: a
+        #: successor's fact base is made from its parent's, and the states expanded next
+        #: are mostly among them.
+        self._recent: dict[int, tuple[LiftedState, FactBase]] = {}
 
-    def parent(self, number: int) -> tuple[LiftedState, FactBase | None]:
-        if self._parent[0] != number:
-            self._parent = (number, self.space.state(number), None)
-        return self._parent[1], self._parent[2]
+    def parent(self, number: int) -> tuple[LiftedState, FactBase]:
+        """State ``number`` and its fact base (made from scratch when not recent), now
+        the most recent."""
+        found = self._recent.pop(number, None)
+        if found is None:
+            state = self.space.state(number)
+            found = (state, self.successors.facts(state))
+        self.remember(number, *found)
+        return found
 
     def remember(self, number: int, state: LiftedState, facts: FactBase) -> None:
-        self._parent = (number, state, facts)
+        recent = self._recent
+        recent.pop(number, None)
+        recent[number] = (state, facts)
+        if len(recent) > RECENT:
+            del recent[next(iter(recent))]
 
-    def child(self, parent: int, step: ActionInstance) -> tuple[LiftedState, bytes, int]:
-        """The state ``step`` leads to from state ``parent``, packed, and its path cost.
-        The packing is the parent's with the few changed atoms' numbers taken out and put
-        in, not the whole state's numbers looked up again."""
+    def child(
+        self, parent: int, step: ActionInstance
+    ) -> tuple[LiftedState, bytes, int, set[GroundAtom], set[GroundAtom]]:
+        """The state ``step`` leads to from state ``parent``, packed, its path cost, and
+        the atoms it lost and gained (for :meth:`child_facts`). The packing is the
+        parent's with the few changed atoms' numbers taken out and put in, not the whole
+        state's numbers looked up again."""
         state, facts = self.parent(parent)
-        successors = self.successors
-        if facts is None and successors.schema(step[0]).effects:
-            facts = successors.facts(state)
-            self._parent = (parent, state, facts)
-        removed, added, cost = successors.change(state, facts, step)
+        removed, added, cost = self.successors.change(state, facts, step)
         packed = self.space.repack(self.space.packed[parent], removed, added)
-        return (state - removed) | added, packed, self.space.g[parent] + cost
+        return (state - removed) | added, packed, self.space.g[parent] + cost, removed, added
+
+    def child_facts(
+        self, parent: int, number: int, state: LiftedState, removed: set[GroundAtom], added: set[GroundAtom]
+    ) -> FactBase:
+        """The fact base of state ``number`` (``state``, a child of ``parent`` by
+        :meth:`child`), made from the parent's, and remembered."""
+        facts = self.successors.facts_after(state, self.parent(parent)[1], removed, added)
+        self.remember(number, state, facts)
+        return facts
 
 
 class LiftedStrategy(Configurable):
@@ -149,8 +170,8 @@ class LiftedLazyGreedySearch(LiftedStrategy):
         best_h = math.inf
         state: LiftedState = successors.task.init
         number = space.add(space.pack(state), NO_PARENT, None, 0)
+        facts = successors.facts(state)
         while True:
-            facts = successors.facts(state)
             if successors.is_goal(facts):
                 return number
             if self.preferred:
@@ -175,9 +196,10 @@ class LiftedLazyGreedySearch(LiftedStrategy):
                 if not frontier:
                     return None
                 parent, step = frontier.pop()
-                state, packed, g = run.child(parent, step)
+                state, packed, g, removed, added = run.child(parent, step)
                 if packed not in space.ids:
                     number = space.add(packed, parent, step, g)
+                    facts = run.child_facts(parent, number, state, removed, added)
                     break
 
 
@@ -226,9 +248,7 @@ class LiftedBFWS(LiftedStrategy):
             closed[number] = 1
             budget.check(run.expanded)
             run.expanded += 1
-            state = space.state(number)
-            facts = successors.facts(state)
-            run.remember(number, state, facts)
+            state, facts = run.parent(number)
             if self.preferred:
                 _, preferred = estimator.estimate_with_preferred(state)
                 preferred_steps = set(preferred)
@@ -237,11 +257,11 @@ class LiftedBFWS(LiftedStrategy):
             for step in successors.applicable(facts):
                 budget.check(run.expanded)  # each child is evaluated: a slow h adds up
                 run.generated += 1
-                child, packed, g = run.child(number, step)
+                child, packed, g, removed, added = run.child(number, step)
                 if packed in space.ids:
                     continue
                 child_number = space.add(packed, number, step, g)
-                child_facts = successors.facts(child)
+                child_facts = run.child_facts(number, child_number, child, removed, added)
                 if successors.is_goal(child_facts):
                     return child_number
                 child_h = estimator.estimate(child)
