@@ -4,6 +4,7 @@ disjunction, ``exists``, derived predicates, conditional effects, action costs).
 
 from __future__ import annotations
 
+import random
 import sys
 from collections import deque
 from pathlib import Path
@@ -14,7 +15,7 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.prover import JoinProver, ProverEngine
-from strips_framework.lifted.query import FactBase, JoinEngine
+from strips_framework.lifted.query import FactBase, JoinEngine, Relation, _reduce, _semijoin
 from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
@@ -148,6 +149,46 @@ def test_a_childs_fact_base_made_from_its_parents_equals_one_made_from_scratch()
                 assert successors.applicable(incremental) == successors.applicable(successors.facts(child))
                 assert successors.is_goal(incremental) == successors.is_goal(successors.facts(child))
     assert updated > 100 and indexes > 100, (updated, indexes)
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_a_semijoin_by_index_probe_keeps_the_rows_a_scan_keeps_in_their_order(seed: int) -> None:
+    """_reduce probes a large relation's index with the other side's few keys; it must
+    keep exactly the rows, in the order, that scanning the relation keeps."""
+    rng = random.Random(seed)
+    values = [f"o{i}" for i in range(rng.randint(3, 12))]
+    columns = rng.choice([("x", "y"), ("x", "y", "z"), ("y", "x")])
+    rows = sorted({tuple(rng.choice(values) for _ in columns) for _ in range(rng.randint(20, 200))})
+    relation = Relation(columns, rows)
+    other = rng.choice([("x",), ("y",), ("y", "x"), ("z", "w"), ("w",)])
+    few = sorted({tuple(rng.choice(values) for _ in other) for _ in range(rng.randint(0, 3))})
+    assert _reduce(relation, relation.rows, other, few) == _semijoin(columns, rows, other, few)
+
+
+def test_blocks_successors_with_large_relations_are_the_ground_ones() -> None:
+    """Sixty blocks in towers: the ``on`` relation is many times larger than the others,
+    so the semi-joins probe its index (see _reduce); the applicable instances and
+    successors are still the ground ones."""
+    domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
+    names = [f"b{i}" for i in range(60)]
+    init = ["(handempty)"]
+    for start in range(0, 60, 10):
+        tower = names[start : start + 10]
+        init += [f"(ontable {tower[0]})", f"(clear {tower[-1]})"]
+        init += [f"(on {upper} {lower})" for lower, upper in zip(tower, tower[1:])]
+    problem = f"""(define (problem towers) (:domain blocksworld) (:objects {' '.join(names)} - block)
+     (:init {' '.join(init)}) (:goal (on b9 b19)))"""
+    pddl = parse_task(domain, problem, "domain.pddl", "towers.pddl")
+    successors = Successors(LiftedTask(pddl))
+    grounded = ground(pddl, prune_irrelevant=False)
+    number = {name: i for i, name in enumerate(grounded.facts)}
+    for state in _reachable(successors, 12):
+        mask = sum(1 << number[_name(atom)] for atom in state)
+        expected = set()
+        for op in grounded.operators:
+            if op.applicable(mask) and op.apply(mask) != mask:
+                expected.add((op.name, frozenset(grounded.facts_of(op.apply(mask))), op.cost))
+        assert _lifted_moves(successors, state) == expected
 
 
 def _resolution():  # noqa: ANN202

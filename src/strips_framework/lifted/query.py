@@ -312,6 +312,9 @@ class JoinEngine:
         self.yannakakis = yannakakis
         self._plans: dict[tuple[Query, tuple[str, ...]], _Plan] = {}
         self._patterns: dict[Query, list[Pattern]] = {}
+        #: The relation of each variable bound by no positive atom, by variable and
+        #: domain: the same for every state, so made (and indexed) once.
+        self._ranges: dict[tuple[str, frozenset[str] | None], Relation] = {}
 
     def relations(
         self, query: Query, facts: FactBase, seed: dict[str, str] | None
@@ -341,8 +344,11 @@ class JoinEngine:
         for variable in query.all_variables():
             if variable not in bound:  # only in negated atoms, inequalities or answers
                 domain = query.domains.get(variable)
-                values = sorted(domain) if domain is not None else self.objects
-                relations.append(Relation((variable,), [(v,) for v in values]))
+                found = self._ranges.get((variable, domain))
+                if found is None:
+                    values = sorted(domain) if domain is not None else self.objects
+                    found = self._ranges[(variable, domain)] = Relation((variable,), [(v,) for v in values])
+                relations.append(found)
                 bound.add(variable)
         plan = self._plans.get((query, seeded))
         if plan is None:
@@ -362,11 +368,11 @@ class JoinEngine:
         rows = [r.rows for r in relations]
         columns = [r.columns for r in relations]
         for child, parent in tree:  # up: a parent keeps the rows some child row agrees with
-            rows[parent] = _semijoin(columns[parent], rows[parent], columns[child], rows[child])
+            rows[parent] = _reduce(relations[parent], rows[parent], columns[child], rows[child])
             if not rows[parent]:
                 return [], []
         for child, parent in reversed(tree):  # down
-            rows[child] = _semijoin(columns[child], rows[child], columns[parent], rows[parent])
+            rows[child] = _reduce(relations[child], rows[child], columns[parent], rows[parent])
         root = tree[-1][1] if tree else 0
         order = [root] + [child for child, _ in reversed(tree)]
         return self._join_in_order(
@@ -415,6 +421,26 @@ class JoinEngine:
             columns.extend(relation.columns[i] for i in extra)
             rows = filters.apply(columns, joined)
         return columns, rows
+
+
+def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+    """The semi-join of ``rows`` (``relation``'s, perhaps already reduced) with
+    ``other_rows``. When the relation is unreduced and many times larger, its index on
+    the shared columns is probed with the few keys of the other side, so the cost follows
+    the rows kept, not the relation's size (a large state relation, e.g. every ``on``
+    atom of a thousand blocks, against the one block held); the kept rows are sorted
+    back into filing order."""
+    if rows is relation.rows and len(other_rows) * 8 < len(rows):
+        shared = [c for c in relation.columns if c in other]
+        if shared:
+            index = relation.index(tuple(relation.columns.index(c) for c in shared))
+            theirs = _getter([other.index(c) for c in shared])
+            kept = [row for key in set(map(theirs, other_rows)) for row in index.get(key, ())]
+            if len(kept) == len(rows):
+                return rows
+            kept.sort()
+            return kept
+    return _semijoin(relation.columns, rows, other, other_rows)
 
 
 def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
