@@ -132,7 +132,7 @@ def test_a_childs_fact_base_made_from_its_parents_equals_one_made_from_scratch()
             for step in successors.applicable(facts):
                 removed, added, _ = successors.change(state, facts, step)
                 child = (state - removed) | added
-                made = parent.changed(removed, added)
+                made = parent.changed(child, removed, added)
                 assert made.atoms == set(child)
                 scratch = fluent(child)
                 mine, theirs = _filed(made), _filed(scratch)

@@ -114,7 +114,9 @@ class FactBase:
         static: FactBase | None = None,
         static_predicates: frozenset[str] = frozenset(),
     ) -> None:
-        self.atoms: set[GroundAtom] = set(atoms)
+        #: A set, or the state's own frozenset for a fact base made by
+        #: :meth:`changed` (copied into a set when :meth:`add` first adds to it).
+        self.atoms: set[GroundAtom] | frozenset[GroundAtom] = set(atoms)
         # Filed by predicate and arity (a prover's task may use a name at two arities).
         by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
         for atom in sorted(self.atoms):  # so that no answer's order depends on hashing
@@ -138,6 +140,8 @@ class FactBase:
         """Add (derived) atoms; the new ones, whose predicates' relations are rebuilt."""
         new = sorted({atom for atom in atoms if atom not in self.atoms})
         if new:
+            if isinstance(self.atoms, frozenset):
+                self.atoms = set(self.atoms)
             self.atoms.update(new)
             touched = set()
             for atom in new:
@@ -146,15 +150,16 @@ class FactBase:
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
         return new
 
-    def changed(self, removed: Collection[GroundAtom], added: Collection[GroundAtom]) -> FactBase:
-        """The fact base of the state this one's differs from by ``removed`` (atoms it
-        holds) and ``added`` (atoms it lacks), neither of a static predicate; equal to
-        one made from scratch (same filing order, same relations) when this one holds no
-        atoms added by :meth:`add`. The predicates it does not touch share this one's
-        lists and relations."""
+    def changed(
+        self, state: frozenset[GroundAtom], removed: Collection[GroundAtom], added: Collection[GroundAtom]
+    ) -> FactBase:
+        """The fact base of ``state``, which this one's state becomes by losing
+        ``removed`` and gaining ``added`` (none of a static predicate); equal to one made
+        from scratch (same filing order, same relations) when this one holds no atoms
+        added by :meth:`add`. The predicates it does not touch share this one's lists and
+        relations, and ``state`` itself is its atom set (not copied)."""
         child = FactBase.__new__(FactBase)
-        child.atoms = (self.atoms - removed) if removed else set(self.atoms)
-        child.atoms.update(added)
+        child.atoms = state
         child.static = self.static
         child._static_predicates = self._static_predicates
         by_predicate = dict(self._by_predicate)

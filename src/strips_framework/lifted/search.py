@@ -81,7 +81,8 @@ class LiftedRun:
         state, facts = self.parent(parent)
         removed, added, cost = self.successors.change(state, facts, step)
         packed = self.space.repack(self.space.packed[parent], removed, added)
-        return (state - removed) | added, packed, self.space.g[parent] + cost, removed, added
+        # One copy of the state: ``removed`` lies in it and ``added`` outside it.
+        return state ^ (removed | added), packed, self.space.g[parent] + cost, removed, added
 
     def child_facts(
         self, parent: int, number: int, state: LiftedState, removed: set[GroundAtom], added: set[GroundAtom]

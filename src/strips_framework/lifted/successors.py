@@ -49,7 +49,7 @@ class Successors:
         atoms would have to be derived again)."""
         if self._strata:
             return self.facts(state)
-        return parent.changed(removed, added)
+        return parent.changed(state, removed, added)
 
     def _saturate(self, rules: list[Rule], facts: FactBase) -> None:
         """Fire ``rules`` until they give no new atom (naive evaluation: a stratum of a
