@@ -181,9 +181,8 @@ class FactBase:
             change = touched.get((pattern.predicate, pattern.size))
             if change is None:
                 relations[key] = (pattern, relation)
-            elif not pattern.columns:  # a ground atom (every position a check): held or not
-                ground = (pattern.predicate, *[value for _, value in pattern.checks])
-                relations[key] = (pattern, Relation((), [()] if ground in child.atoms else []))
+            elif not pattern.columns:  # a ground atom: looked up again on demand
+                continue
             else:
                 out = [row for row in map(pattern.row, change[0]) if row is not None]
                 into = [row for row in map(pattern.row, change[1]) if row is not None]
@@ -197,10 +196,11 @@ class FactBase:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
         if found is None:
-            found = self._relations[pattern.key] = (
-                pattern,
-                pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ())),
-            )
+            if pattern.columns:
+                relation = pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ()))
+            else:  # a ground atom (every position a check): held or not, no scan
+                relation = Relation((), [()] if pattern.ground() in self.atoms else [])
+            found = self._relations[pattern.key] = (pattern, relation)
         return found[1]
 
 
@@ -251,6 +251,10 @@ class Pattern:
         else:
             rows = [()] if candidates else []
         return Relation(self.columns, rows)
+
+    def ground(self) -> GroundAtom:
+        """The atom of a pattern without variables."""
+        return (self.predicate, *[value for _, value in self.checks])
 
     def row(self, atom: GroundAtom) -> Row | None:
         """The row ``atom`` (of the pattern's predicate and arity) gives, None when it

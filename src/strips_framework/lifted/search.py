@@ -17,6 +17,7 @@ state with the same estimate held, else 2 (Lipovetzky and Geffner's BFWS(f5), wi
 from __future__ import annotations
 
 import math
+from collections import OrderedDict
 from typing import ClassVar
 
 from strips_framework.forward.budget import Budget, peak_mib
@@ -52,24 +53,26 @@ class LiftedRun:
         #: The states (and fact bases) last expanded or generated, oldest first: a
         #: successor's fact base is made from its parent's, and the states expanded next
         #: are mostly among them.
-        self._recent: dict[int, tuple[LiftedState, FactBase]] = {}
+        self._recent: OrderedDict[int, tuple[LiftedState, FactBase]] = OrderedDict()
 
     def parent(self, number: int) -> tuple[LiftedState, FactBase]:
         """State ``number`` and its fact base (made from scratch when not recent), now
         the most recent."""
-        found = self._recent.pop(number, None)
+        found = self._recent.get(number)
         if found is None:
             state = self.space.state(number)
             found = (state, self.successors.facts(state))
-        self.remember(number, *found)
+            self.remember(number, *found)
+        else:
+            self._recent.move_to_end(number)
         return found
 
     def remember(self, number: int, state: LiftedState, facts: FactBase) -> None:
         recent = self._recent
-        recent.pop(number, None)
         recent[number] = (state, facts)
+        recent.move_to_end(number)
         if len(recent) > RECENT:
-            del recent[next(iter(recent))]
+            recent.popitem(last=False)
 
     def child(
         self, parent: int, step: ActionInstance
