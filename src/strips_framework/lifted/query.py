@@ -106,7 +106,7 @@ class FactBase:
     use. A state's fact base sits on the task's static one, which answers for the static
     predicates (and keeps its relations for the whole search)."""
 
-    __slots__ = ("atoms", "_by_predicate", "_relations", "static", "_static_predicates")
+    __slots__ = ("atoms", "_by_predicate", "_relations", "_pending", "static", "_static_predicates")
 
     def __init__(
         self,
@@ -128,6 +128,9 @@ class FactBase:
                 found.append(atom)
         self._by_predicate = by_predicate
         self._relations: dict[object, tuple[Pattern, Relation]] = {}
+        #: Relations of a parent fact base (see :meth:`changed`) with the atoms of their
+        #: predicate removed and added since, updated on first use.
+        self._pending: dict[object, tuple[Pattern, Relation, _Change]] = {}
         self.static = static
         self._static_predicates = static_predicates
 
@@ -148,6 +151,7 @@ class FactBase:
                 self._by_predicate.setdefault((atom[0], len(atom)), []).append(atom)
                 touched.add(atom[0])
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
+            self._pending = {k: p for k, p in self._pending.items() if k[0] not in touched}
         return new
 
     def changed(
@@ -157,13 +161,17 @@ class FactBase:
         ``removed`` and gaining ``added`` (none of a static predicate); equal to one made
         from scratch (same filing order, same relations) when this one holds no atoms
         added by :meth:`add`. The predicates it does not touch share this one's lists and
-        relations, and ``state`` itself is its atom set (not copied)."""
+        relations, and ``state`` itself is its atom set (not copied); the relations of
+        those it touches are updated when first asked for (a child whose goal test is
+        all that is asked of it updates none but the goal's)."""
+        for key, (pattern, _, _) in list(self._pending.items()):  # one level of pending
+            self.relation(pattern)
         child = FactBase.__new__(FactBase)
         child.atoms = state
         child.static = self.static
         child._static_predicates = self._static_predicates
         by_predicate = dict(self._by_predicate)
-        touched: dict[tuple[str, int], tuple[list[GroundAtom], list[GroundAtom]]] = {}
+        touched: dict[tuple[str, int], _Change] = {}
         for atom in removed:
             touched.setdefault((atom[0], len(atom)), ([], []))[0].append(atom)
         for atom in added:
@@ -177,17 +185,15 @@ class FactBase:
             by_predicate[key] = atoms
         child._by_predicate = by_predicate
         relations = {}
+        pending = {}
         for key, (pattern, relation) in self._relations.items():
             change = touched.get((pattern.predicate, pattern.size))
             if change is None:
                 relations[key] = (pattern, relation)
-            elif not pattern.columns:  # a ground atom: looked up again on demand
-                continue
-            else:
-                out = [row for row in map(pattern.row, change[0]) if row is not None]
-                into = [row for row in map(pattern.row, change[1]) if row is not None]
-                relations[key] = (pattern, relation.changed(out, into) if out or into else relation)
+            elif pattern.columns:  # (a ground atom is looked up again on demand)
+                pending[key] = (pattern, relation, change)
         child._relations = relations
+        child._pending = pending
         return child
 
     def relation(self, pattern: Pattern) -> Relation:
@@ -196,12 +202,22 @@ class FactBase:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
         if found is None:
-            if pattern.columns:
+            pending = self._pending.pop(pattern.key, None)
+            if pending is not None:
+                _, parents, (out, into) = pending
+                removed = [row for row in map(pattern.row, out) if row is not None]
+                added = [row for row in map(pattern.row, into) if row is not None]
+                relation = parents.changed(removed, added) if removed or added else parents
+            elif pattern.columns:
                 relation = pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ()))
             else:  # a ground atom (every position a check): held or not, no scan
                 relation = Relation((), [()] if pattern.ground() in self.atoms else [])
             found = self._relations[pattern.key] = (pattern, relation)
         return found[1]
+
+
+#: The atoms of one predicate a state lost and gained.
+_Change = tuple[list[GroundAtom], list[GroundAtom]]
 
 
 class Pattern:
