@@ -16,11 +16,11 @@ from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.prover import JoinProver, ProverEngine
 from strips_framework.lifted.query import FactBase, JoinEngine, Relation, _reduce, _semijoin
-from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
+from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch, _Novelty
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
 from strips_framework.limits import Limits
-from strips_framework.pddl import load_task, parse_task
+from strips_framework.pddl import PddlTask, load_task, parse_task
 from strips_framework.pddl.validate import validate_plan
 from strips_framework.plugin.registry import Registry
 from strips_framework.result import Status
@@ -171,20 +171,25 @@ def test_a_semijoin_by_index_probe_keeps_the_rows_a_scan_keeps_in_their_order(se
     assert _reduce(relation, relation.rows, other, few) == _semijoin(columns, rows, other, few)
 
 
-def test_blocks_successors_with_large_relations_are_the_ground_ones() -> None:
-    """Sixty blocks in towers: the ``on`` relation is many times larger than the others,
-    so the semi-joins probe its index (see _reduce); the applicable instances and
-    successors are still the ground ones."""
+def _towers(blocks: int) -> PddlTask:
+    """Blocks in towers of ten; the goal puts the top of the first on the second's."""
     domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
-    names = [f"b{i}" for i in range(60)]
+    names = [f"b{i}" for i in range(blocks)]
     init = ["(handempty)"]
-    for start in range(0, 60, 10):
+    for start in range(0, blocks, 10):
         tower = names[start : start + 10]
         init += [f"(ontable {tower[0]})", f"(clear {tower[-1]})"]
         init += [f"(on {upper} {lower})" for lower, upper in zip(tower, tower[1:])]
     problem = f"""(define (problem towers) (:domain blocksworld) (:objects {' '.join(names)} - block)
-     (:init {' '.join(init)}) (:goal (on b9 b19)))"""
-    pddl = parse_task(domain, problem, "domain.pddl", "towers.pddl")
+     (:init {' '.join(init)}) (:goal (and (on b9 b19) (on b0 b29))))"""
+    return parse_task(domain, problem, "domain.pddl", "towers.pddl")
+
+
+def test_blocks_successors_with_large_relations_are_the_ground_ones() -> None:
+    """Sixty blocks in towers: the ``on`` relation is many times larger than the others,
+    so the semi-joins probe its index (see _reduce); the applicable instances and
+    successors are still the ground ones."""
+    pddl = _towers(60)
     successors = Successors(LiftedTask(pddl))
     grounded = ground(pddl, prune_irrelevant=False)
     number = {name: i for i, name in enumerate(grounded.facts)}
@@ -195,6 +200,50 @@ def test_blocks_successors_with_large_relations_are_the_ground_ones() -> None:
             if op.applicable(mask) and op.apply(mask) != mask:
                 expected.add((op.name, frozenset(grounded.facts_of(op.apply(mask))), op.cost))
         assert _lifted_moves(successors, state) == expected
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_novelty_from_a_parents_changes_equals_novelty_from_the_whole_state(seed: int) -> None:
+    """BFWS tests a child evaluated under its parent's estimate by the atoms it gained
+    only; random walks, each state's novelty against the whole-state test."""
+    rng = random.Random(seed)
+    atoms = [("p", f"o{i}") for i in range(30)]
+    hinted, whole = _Novelty(), _Novelty()
+    evaluated = [(frozenset(rng.sample(atoms, 8)), 2.0)]
+    assert hinted.of(*evaluated[0]) == whole.of(*evaluated[0])
+    novel = 0
+    for _ in range(300):
+        parent, h = rng.choice(evaluated)
+        removed = set(rng.sample(sorted(parent), min(len(parent), rng.randint(0, 2))))
+        added = set(rng.sample([a for a in atoms if a not in parent], rng.randint(0, 2)))
+        child, child_h = (parent - removed) | added, float(rng.choice([h, h, h - 1, h + 1]))
+        expected = whole.of(child, child_h)
+        assert hinted.of(child, child_h, added if child_h == h else None) == expected
+        evaluated.append((child, child_h))
+        novel += expected == 1
+    assert 10 < novel < 290
+
+
+def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The search's hints (a child's gained atoms, given only under its parent's
+    estimate) leave every novelty, and so the whole search, as the whole-state test."""
+    tasks = [random_pddl_task(seed) for seed in range(25)]
+    tasks.append(_towers(30))
+
+    def runs() -> list[tuple]:
+        found = []
+        for pddl in tasks:
+            result = LiftedBFWS(preferred=False).search_task(
+                Successors(LiftedTask(pddl)), LiftedGoalCount().for_task(pddl), Limits(time=30, expansions=300)
+            )
+            found.append((result.status, result.plan, result.statistics.expanded))
+        return found
+
+    hinted = runs()
+    whole = _Novelty.of
+    monkeypatch.setattr(_Novelty, "of", lambda self, state, h, added=None: whole(self, state, h))
+    assert runs() == hinted
+    assert sum(expanded for _, _, expanded in hinted) > 50
 
 
 def _resolution():  # noqa: ANN202

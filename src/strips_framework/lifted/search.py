@@ -227,6 +227,7 @@ class LiftedBFWS(LiftedStrategy):
             lists.append(BestFirstOpenList())
         turn = 0
         closed = bytearray()
+        estimates: list[float] = []  # by state number
         state = successors.task.init
         facts = successors.facts(state)
         if successors.is_goal(facts):
@@ -239,6 +240,7 @@ class LiftedBFWS(LiftedStrategy):
             return None
         number = space.add(space.pack(state), NO_PARENT, None, 0)
         closed.append(0)
+        estimates.append(h)
         lists[0].push(h, number)
         lists[1].push((novelty.of(state, h), h), number)
         while any(lists):
@@ -253,6 +255,7 @@ class LiftedBFWS(LiftedStrategy):
             budget.check(run.expanded)
             run.expanded += 1
             state, facts = run.parent(number)
+            h = estimates[number]
             if self.preferred:
                 _, preferred = estimator.estimate_with_preferred(state)
                 preferred_steps = set(preferred)
@@ -270,13 +273,15 @@ class LiftedBFWS(LiftedStrategy):
                     return child_number
                 child_h = estimator.estimate(child)
                 run.evaluated += 1
+                estimates.append(child_h)
                 if child_h == math.inf:
                     run.dead_ends += 1
                     closed.append(1)
                     continue
                 closed.append(0)
                 lists[0].push(child_h, child_number)
-                lists[1].push((novelty.of(child, child_h), child_h), child_number)
+                novel = novelty.of(child, child_h, added if child_h == h else None)
+                lists[1].push((novel, child_h), child_number)
                 if step in preferred_steps:
                     lists[2].push(child_h, child_number)
         return None
@@ -289,9 +294,16 @@ class _Novelty:
     def __init__(self) -> None:
         self._seen: dict[float, set] = {}
 
-    def of(self, state: LiftedState, h: float) -> int:
+    def of(self, state: LiftedState, h: float, added: set[GroundAtom] | None = None) -> int:
+        """``added``, when given: ``state`` is a successor of a state evaluated here
+        with the same estimate, which it differs from by gaining ``added`` (and losing
+        some). That state's atoms were all seen then, so only ``added`` can be new, and
+        the test costs what the action changed rather than the state's size."""
         seen = self._seen.setdefault(h, set())
-        new = state - seen if len(seen) else state
+        if added is not None:
+            new = [atom for atom in added if atom not in seen]
+        else:
+            new = state - seen if len(seen) else state
         if new:
             seen.update(new)
             return 1
