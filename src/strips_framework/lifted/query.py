@@ -210,8 +210,8 @@ class FactBase:
                 relation = parents.changed(removed, added) if removed or added else parents
             elif pattern.columns:
                 relation = pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ()))
-            else:  # a ground atom (every position a check): held or not, no scan
-                relation = Relation((), [()] if pattern.ground() in self.atoms else [])
+            else:  # a ground atom: held or not, no scan
+                relation = Relation((), [()] if pattern.ground in self.atoms else [])
             found = self._relations[pattern.key] = (pattern, relation)
         return found[1]
 
@@ -226,7 +226,7 @@ class Pattern:
     relation's columns (each variable's first occurrence, in order). ``key`` is the same
     for equal atoms with the same domains, so a state matches each pattern once."""
 
-    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size")
+    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size", "ground")
 
     def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
         self.predicate = atom.predicate
@@ -249,6 +249,8 @@ class Pattern:
                     self.typed.append((position, domain))
         self.columns = tuple(columns)
         self.size = len(atom.args) + 1
+        #: The atom itself when it has no variables (its relation is a membership test).
+        self.ground: GroundAtom | None = None if columns else (atom.predicate, *atom.args)
 
     def match(self, atoms: Sequence[GroundAtom]) -> Relation:
         candidates = atoms  # of the pattern's predicate and arity
@@ -267,10 +269,6 @@ class Pattern:
         else:
             rows = [()] if candidates else []
         return Relation(self.columns, rows)
-
-    def ground(self) -> GroundAtom:
-        """The atom of a pattern without variables."""
-        return (self.predicate, *[value for _, value in self.checks])
 
     def row(self, atom: GroundAtom) -> Row | None:
         """The row ``atom`` (of the pattern's predicate and arity) gives, None when it
