@@ -4,7 +4,10 @@ are needed). For each size and each search: the set-up time (ground: grounding a
 heuristic's set-up; lifted: compiling the task and the heuristic's set-up), the time per
 expansion over the first expansions of lazy greedy search with hFF (and, as
 ``lifted-gc``, of the lifted search with goal count: its own cost without hFF's), and the
-bytes a stored state costs. Not a pytest benchmark: a row takes seconds to minutes, and the
+bytes a stored state costs. Both domains' branching grows with the task (blocks: one
+unstack per tower; logistics: one drive per truck, one flight per airport), and an
+expansion generates every successor, so the table also gives the successors generated per
+expansion and the time per successor generated, the figure that can stay flat. Not a pytest benchmark: a row takes seconds to minutes, and the
 table goes into docs/search.md by hand.
 
     taskset -c 1 .venv/bin/python benchmarks/bench_scaling.py                # both domains
@@ -120,8 +123,9 @@ def _seconds_per_expansion(search: Callable[[Any], object], run: Any) -> float:
     return (time.perf_counter() - began) / max(run.expanded, 1)
 
 
-def ground_row(task: PddlTask, registry: Registry) -> tuple[float, float, float, int]:
-    """Set-up seconds, seconds per expansion, bytes per state, expansions."""
+def ground_row(task: PddlTask, registry: Registry) -> tuple[float, float, float, int, int]:
+    """Set-up seconds, seconds per expansion, bytes per state, expansions, successors
+    generated (the branching grows with the task, and an expansion's cost with it)."""
     began = time.perf_counter()
     grounded = ground(task)
     estimator = registry.get("heuristic", "ff").cls().for_task(grounded)
@@ -131,22 +135,22 @@ def ground_row(task: PddlTask, registry: Registry) -> tuple[float, float, float,
     space = run.space
     stored = sum(map(sys.getsizeof, space.states)) + sys.getsizeof(space.ids) + sys.getsizeof(space.states)
     stored += (space.parents.itemsize + space.operators.itemsize) * len(space.states)
-    return setup, per, stored / max(len(space.states), 1), run.expanded
+    return setup, per, stored / max(len(space.states), 1), run.expanded, run.generated
 
 
-def lifted_row(task: PddlTask, registry: Registry, heuristic: str = "ff") -> tuple[float, float, float, int]:
+def lifted_row(task: PddlTask, registry: Registry, heuristic: str = "ff") -> tuple[float, float, float, int, int]:
     began = time.perf_counter()
     successors = Successors(LiftedTask(task))
     estimator = registry.get("lifted-heuristic", heuristic).cls().for_task(task)
     setup = time.perf_counter() - began
     run = LiftedRun(successors, estimator, LIMITS, Clock(600))
     per = _seconds_per_expansion(LiftedLazyGreedySearch().run, run)
-    return setup, per, run.space.bytes_per_state(), run.expanded
+    return setup, per, run.space.bytes_per_state(), run.expanded, run.generated
 
 
 #: ``lifted-gc`` is the lifted search with goal count, whose time per expansion is the
 #: search's own (successors, duplicates, packing) with next to nothing for the heuristic.
-SEARCHES: dict[str, Callable[[PddlTask, Registry], tuple[float, float, float, int]]] = {
+SEARCHES: dict[str, Callable[[PddlTask, Registry], tuple[float, float, float, int, int]]] = {
     "ground": ground_row,
     "lifted": lifted_row,
     "lifted-gc": lambda task, registry: lifted_row(task, registry, "goal-count"),
@@ -161,8 +165,8 @@ def main() -> None:
     parser.add_argument("--budget", type=float, default=120.0)
     args = parser.parse_args()
     registry = Registry.from_plugins()
-    print("| domain | size | search | set-up s | ms / expansion | bytes / state | expanded |")
-    print("|---|---:|---|---:|---:|---:|---:|")
+    print("| domain | size | search | set-up s | ms / expansion | bytes / state | expanded | generated / expansion | µs / generated |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|")
     for name in args.domain or sorted(DOMAINS):
         make, sizes = DOMAINS[name]
         if args.sizes:
@@ -172,14 +176,15 @@ def main() -> None:
             task = make(size)
             for search in args.searches.split(","):
                 if search in over:
-                    print(f"| {name} | {size} | {search} | skipped: set-up over {args.budget:.0f} s at a smaller size | | | |")
+                    print(f"| {name} | {size} | {search} | skipped: set-up over {args.budget:.0f} s at a smaller size | | | | | |")
                     continue
-                setup, per, size_bytes, expanded = SEARCHES[search](task, registry)
+                setup, per, size_bytes, expanded, generated = SEARCHES[search](task, registry)
+                branching = generated / max(expanded, 1)
                 if setup > args.budget:
                     over.add(search)
                 print(
                     f"| {name} | {size} | {search} | {setup:.2f} | {per * 1000:.2f} | "
-                    f"{size_bytes:.0f} | {expanded} |",
+                    f"{size_bytes:.0f} | {expanded} | {branching:.0f} | {per * 1e6 / max(branching, 1):.2f} |",
                     flush=True,
                 )
 

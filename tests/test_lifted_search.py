@@ -4,6 +4,7 @@ disjunction, ``exists``, derived predicates, conditional effects, action costs).
 
 from __future__ import annotations
 
+import random
 import sys
 from collections import deque
 from pathlib import Path
@@ -14,12 +15,12 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.prover import JoinProver, ProverEngine
-from strips_framework.lifted.query import JoinEngine
-from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
+from strips_framework.lifted.query import FactBase, JoinEngine, Relation, _reduce, _semijoin
+from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch, _Novelty
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
 from strips_framework.limits import Limits
-from strips_framework.pddl import load_task, parse_task
+from strips_framework.pddl import PddlTask, load_task, parse_task
 from strips_framework.pddl.validate import validate_plan
 from strips_framework.plugin.registry import Registry
 from strips_framework.result import Status
@@ -96,6 +97,153 @@ def test_yannakakis_and_greedy_joins_agree(seed: int) -> None:
     greedy = Successors(task, JoinEngine(task.objects, yannakakis=False))
     for state in _reachable(full, 20):
         assert sorted(full.applicable(full.facts(state))) == sorted(greedy.applicable(greedy.facts(state)))
+
+
+def _filed(facts: FactBase) -> tuple[dict, dict]:
+    """A fact base's atoms by predicate (empty lists left out) and, for each relation it
+    has built, its rows and its built indexes."""
+    by_predicate = {key: atoms for key, atoms in facts._by_predicate.items() if atoms}
+    relations = {
+        key: (relation.rows, {p: dict(index) for p, index in relation._indexes.items()})
+        for key, (_, relation) in facts._relations.items()
+    }
+    return by_predicate, relations
+
+
+def test_a_childs_fact_base_made_from_its_parents_equals_one_made_from_scratch() -> None:
+    """FactBase.changed against a rebuild: same filing, same relations and indexes in the
+    same order, the parent's left as it was; and the search's facts_after (which falls
+    back to a rebuild for tasks with axioms) gives the same applicable instances."""
+    updated = indexes = 0
+    for seed in range(20):
+        task = LiftedTask(random_pddl_task(seed))
+        successors = Successors(task)
+        queries = [q for schema in task.actions for q in schema.precondition] + list(task.goal)
+
+        def fluent(state: frozenset) -> FactBase:  # the relations the search builds, built
+            facts = FactBase(state, successors.static, task.static)
+            for query in queries:
+                successors.engine.answers(query, facts)
+            return facts
+
+        for state in _reachable(successors, 10):
+            parent, facts = fluent(state), successors.facts(state)
+            before = _filed(parent)
+            for step in successors.applicable(facts):
+                removed, added, _ = successors.change(state, facts, step)
+                child = (state - removed) | added
+                made = parent.changed(child, removed, added)
+                assert made.atoms == set(child)
+                for query in queries:  # the touched relations, updated on first use
+                    successors.engine.answers(query, made)
+                scratch = fluent(child)
+                mine, theirs = _filed(made), _filed(scratch)
+                assert mine[0] == theirs[0]
+                for key, (rows, built) in mine[1].items():
+                    assert rows == theirs[1][key][0], (seed, step, key)
+                    relation = scratch._relations[key][1]
+                    for positions, index in built.items():
+                        assert index == dict(relation.index(positions)), (seed, step, key, positions)
+                        indexes += 1
+                    updated += rows is not before[1][key][0]
+                after = _filed(parent)  # (the child's joins may add indexes to shared relations)
+                assert after[0] == before[0], "the parent's atoms changed"
+                for key, (rows, built) in before[1].items():
+                    assert after[1][key][0] == rows, "the parent's relation changed"
+                    assert all(after[1][key][1][p] == index for p, index in built.items())
+                incremental = successors.facts_after(child, facts, removed, added)
+                assert successors.applicable(incremental) == successors.applicable(successors.facts(child))
+                assert successors.is_goal(incremental) == successors.is_goal(successors.facts(child))
+    assert updated > 100 and indexes > 100, (updated, indexes)
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_a_semijoin_by_index_probe_keeps_the_rows_a_scan_keeps_in_their_order(seed: int) -> None:
+    """_reduce probes a large relation's index with the other side's few keys; it must
+    keep exactly the rows, in the order, that scanning the relation keeps."""
+    rng = random.Random(seed)
+    values = [f"o{i}" for i in range(rng.randint(3, 12))]
+    columns = rng.choice([("x", "y"), ("x", "y", "z"), ("y", "x")])
+    rows = sorted({tuple(rng.choice(values) for _ in columns) for _ in range(rng.randint(20, 200))})
+    relation = Relation(columns, rows)
+    other = rng.choice([("x",), ("y",), ("y", "x"), ("z", "w"), ("w",)])
+    few = sorted({tuple(rng.choice(values) for _ in other) for _ in range(rng.randint(0, 3))})
+    assert _reduce(relation, relation.rows, other, few) == _semijoin(columns, rows, other, few)
+
+
+def _towers(blocks: int) -> PddlTask:
+    """Blocks in towers of ten; the goal puts the top of the first on the second's."""
+    domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
+    names = [f"b{i}" for i in range(blocks)]
+    init = ["(handempty)"]
+    for start in range(0, blocks, 10):
+        tower = names[start : start + 10]
+        init += [f"(ontable {tower[0]})", f"(clear {tower[-1]})"]
+        init += [f"(on {upper} {lower})" for lower, upper in zip(tower, tower[1:])]
+    problem = f"""(define (problem towers) (:domain blocksworld) (:objects {' '.join(names)} - block)
+     (:init {' '.join(init)}) (:goal (and (on b9 b19) (on b0 b29))))"""
+    return parse_task(domain, problem, "domain.pddl", "towers.pddl")
+
+
+def test_blocks_successors_with_large_relations_are_the_ground_ones() -> None:
+    """Sixty blocks in towers: the ``on`` relation is many times larger than the others,
+    so the semi-joins probe its index (see _reduce); the applicable instances and
+    successors are still the ground ones."""
+    pddl = _towers(60)
+    successors = Successors(LiftedTask(pddl))
+    grounded = ground(pddl, prune_irrelevant=False)
+    number = {name: i for i, name in enumerate(grounded.facts)}
+    for state in _reachable(successors, 12):
+        mask = sum(1 << number[_name(atom)] for atom in state)
+        expected = set()
+        for op in grounded.operators:
+            if op.applicable(mask) and op.apply(mask) != mask:
+                expected.add((op.name, frozenset(grounded.facts_of(op.apply(mask))), op.cost))
+        assert _lifted_moves(successors, state) == expected
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_novelty_from_a_parents_changes_equals_novelty_from_the_whole_state(seed: int) -> None:
+    """BFWS tests a child evaluated under its parent's estimate by the atoms it gained
+    only; random walks, each state's novelty against the whole-state test."""
+    rng = random.Random(seed)
+    atoms = [("p", f"o{i}") for i in range(30)]
+    hinted, whole = _Novelty(), _Novelty()
+    evaluated = [(frozenset(rng.sample(atoms, 8)), 2.0)]
+    assert hinted.of(*evaluated[0]) == whole.of(*evaluated[0])
+    novel = 0
+    for _ in range(300):
+        parent, h = rng.choice(evaluated)
+        removed = set(rng.sample(sorted(parent), min(len(parent), rng.randint(0, 2))))
+        added = set(rng.sample([a for a in atoms if a not in parent], rng.randint(0, 2)))
+        child, child_h = (parent - removed) | added, float(rng.choice([h, h, h - 1, h + 1]))
+        expected = whole.of(child, child_h)
+        assert hinted.of(child, child_h, added if child_h == h else None) == expected
+        evaluated.append((child, child_h))
+        novel += expected == 1
+    assert 10 < novel < 290
+
+
+def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The search's hints (a child's gained atoms, given only under its parent's
+    estimate) leave every novelty, and so the whole search, as the whole-state test."""
+    tasks = [random_pddl_task(seed) for seed in range(25)]
+    tasks.append(_towers(30))
+
+    def runs() -> list[tuple]:
+        found = []
+        for pddl in tasks:
+            result = LiftedBFWS(preferred=False).search_task(
+                Successors(LiftedTask(pddl)), LiftedGoalCount().for_task(pddl), Limits(time=30, expansions=300)
+            )
+            found.append((result.status, result.plan, result.statistics.expanded))
+        return found
+
+    hinted = runs()
+    whole = _Novelty.of
+    monkeypatch.setattr(_Novelty, "of", lambda self, state, h, added=None: whole(self, state, h))
+    assert runs() == hinted
+    assert sum(expanded for _, _, expanded in hinted) > 50
 
 
 def _resolution():  # noqa: ANN202

@@ -11,6 +11,11 @@ negated atoms and inequalities as soon as their variables are bound, and project
 answer variables. Facts are filed in sorted order, so no answer's order, and so no
 search, depends on hash order.
 
+A successor's fact base is made from its parent's and the few atoms the action changed
+(:meth:`FactBase.changed`): the lists, relations and indexes of the predicates it did not
+touch are shared, those it touched are copied and updated at the changed atoms only, so
+that making it costs what the action touches rather than what the state holds.
+
 An acyclic query (a join tree exists, found by GYO reduction) is answered the Yannakakis
 way: semi-joins up and down the tree first remove every tuple that takes part in no
 answer, so no join step makes a tuple the next one throws away. A cyclic query is joined
@@ -21,7 +26,8 @@ a relation is built once per relation (so once per task for a static one).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from bisect import bisect_left, insort
+from collections.abc import Collection, Iterable, Sequence
 from operator import itemgetter
 from typing import Protocol
 
@@ -59,6 +65,33 @@ class Relation:
             self._indexes[positions] = found
         return found
 
+    def changed(self, removed: Sequence[Row], added: Sequence[Row]) -> Relation:
+        """This relation less the rows ``removed`` (which it holds) and with the rows
+        ``added`` (which it lacks), rows and built indexes kept in their sorted filing
+        order: the same relation as one matched from scratch, in time linear in the
+        changes plus a copy of the rows and of the touched index buckets."""
+        rows = list(self.rows)
+        for row in removed:
+            del rows[bisect_left(rows, row)]
+        for row in added:
+            insort(rows, row)
+        child = Relation(self.columns, rows)
+        for positions, index in self._indexes.items():
+            copy = dict(index)
+            key = _getter(positions)
+            for row in removed:
+                k = key(row)
+                bucket = copy[k] = list(copy[k])
+                del bucket[bisect_left(bucket, row)]
+                if not bucket:
+                    del copy[k]
+            for row in added:
+                k = key(row)
+                bucket = copy[k] = list(copy.get(k, ()))
+                insort(bucket, row)
+            child._indexes[positions] = copy
+        return child
+
 
 def _getter(positions: Sequence[int]):  # noqa: ANN202 - itemgetter or a lambda
     """A function from a row to its values at ``positions``: a single value for one
@@ -73,7 +106,7 @@ class FactBase:
     use. A state's fact base sits on the task's static one, which answers for the static
     predicates (and keeps its relations for the whole search)."""
 
-    __slots__ = ("atoms", "_by_predicate", "_relations", "static", "_static_predicates")
+    __slots__ = ("atoms", "_by_predicate", "_relations", "_pending", "static", "_static_predicates")
 
     def __init__(
         self,
@@ -81,7 +114,9 @@ class FactBase:
         static: FactBase | None = None,
         static_predicates: frozenset[str] = frozenset(),
     ) -> None:
-        self.atoms: set[GroundAtom] = set(atoms)
+        #: A set, or the state's own frozenset for a fact base made by
+        #: :meth:`changed` (copied into a set when :meth:`add` first adds to it).
+        self.atoms: set[GroundAtom] | frozenset[GroundAtom] = set(atoms)
         # Filed by predicate and arity (a prover's task may use a name at two arities).
         by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
         for atom in sorted(self.atoms):  # so that no answer's order depends on hashing
@@ -92,7 +127,10 @@ class FactBase:
             else:
                 found.append(atom)
         self._by_predicate = by_predicate
-        self._relations: dict[object, Relation] = {}
+        self._relations: dict[object, tuple[Pattern, Relation]] = {}
+        #: Relations of a parent fact base (see :meth:`changed`) with the atoms of their
+        #: predicate removed and added since, updated on first use.
+        self._pending: dict[object, tuple[Pattern, Relation, _Change]] = {}
         self.static = static
         self._static_predicates = static_predicates
 
@@ -105,13 +143,58 @@ class FactBase:
         """Add (derived) atoms; the new ones, whose predicates' relations are rebuilt."""
         new = sorted({atom for atom in atoms if atom not in self.atoms})
         if new:
+            if isinstance(self.atoms, frozenset):
+                self.atoms = set(self.atoms)
             self.atoms.update(new)
             touched = set()
             for atom in new:
                 self._by_predicate.setdefault((atom[0], len(atom)), []).append(atom)
                 touched.add(atom[0])
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
+            self._pending = {k: p for k, p in self._pending.items() if k[0] not in touched}
         return new
+
+    def changed(
+        self, state: frozenset[GroundAtom], removed: Collection[GroundAtom], added: Collection[GroundAtom]
+    ) -> FactBase:
+        """The fact base of ``state``, which this one's state becomes by losing
+        ``removed`` and gaining ``added`` (none of a static predicate); equal to one made
+        from scratch (same filing order, same relations) when this one holds no atoms
+        added by :meth:`add`. The predicates it does not touch share this one's lists and
+        relations, and ``state`` itself is its atom set (not copied); the relations of
+        those it touches are updated when first asked for (a child whose goal test is
+        all that is asked of it updates none but the goal's)."""
+        for key, (pattern, _, _) in list(self._pending.items()):  # one level of pending
+            self.relation(pattern)
+        child = FactBase.__new__(FactBase)
+        child.atoms = state
+        child.static = self.static
+        child._static_predicates = self._static_predicates
+        by_predicate = dict(self._by_predicate)
+        touched: dict[tuple[str, int], _Change] = {}
+        for atom in removed:
+            touched.setdefault((atom[0], len(atom)), ([], []))[0].append(atom)
+        for atom in added:
+            touched.setdefault((atom[0], len(atom)), ([], []))[1].append(atom)
+        for key, (out, into) in touched.items():
+            atoms = list(by_predicate.get(key, ()))
+            for atom in out:
+                del atoms[bisect_left(atoms, atom)]
+            for atom in into:
+                insort(atoms, atom)
+            by_predicate[key] = atoms
+        child._by_predicate = by_predicate
+        relations = {}
+        pending = {}
+        for key, (pattern, relation) in self._relations.items():
+            change = touched.get((pattern.predicate, pattern.size))
+            if change is None:
+                relations[key] = (pattern, relation)
+            elif pattern.columns:  # (a ground atom is looked up again on demand)
+                pending[key] = (pattern, relation, change)
+        child._relations = relations
+        child._pending = pending
+        return child
 
     def relation(self, pattern: Pattern) -> Relation:
         """The atoms matching ``pattern`` as rows over its variables."""
@@ -119,10 +202,22 @@ class FactBase:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
         if found is None:
-            found = self._relations[pattern.key] = pattern.match(
-                self._by_predicate.get((pattern.predicate, pattern.size), ())
-            )
-        return found
+            pending = self._pending.pop(pattern.key, None)
+            if pending is not None:
+                _, parents, (out, into) = pending
+                removed = [row for row in map(pattern.row, out) if row is not None]
+                added = [row for row in map(pattern.row, into) if row is not None]
+                relation = parents.changed(removed, added) if removed or added else parents
+            elif pattern.columns:
+                relation = pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ()))
+            else:  # a ground atom: held or not, no scan
+                relation = Relation((), [()] if pattern.ground in self.atoms else [])
+            found = self._relations[pattern.key] = (pattern, relation)
+        return found[1]
+
+
+#: The atoms of one predicate a state lost and gained.
+_Change = tuple[list[GroundAtom], list[GroundAtom]]
 
 
 class Pattern:
@@ -131,7 +226,7 @@ class Pattern:
     relation's columns (each variable's first occurrence, in order). ``key`` is the same
     for equal atoms with the same domains, so a state matches each pattern once."""
 
-    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size")
+    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size", "ground")
 
     def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
         self.predicate = atom.predicate
@@ -154,6 +249,8 @@ class Pattern:
                     self.typed.append((position, domain))
         self.columns = tuple(columns)
         self.size = len(atom.args) + 1
+        #: The atom itself when it has no variables (its relation is a membership test).
+        self.ground: GroundAtom | None = None if columns else (atom.predicate, *atom.args)
 
     def match(self, atoms: Sequence[GroundAtom]) -> Relation:
         candidates = atoms  # of the pattern's predicate and arity
@@ -172,6 +269,20 @@ class Pattern:
         else:
             rows = [()] if candidates else []
         return Relation(self.columns, rows)
+
+    def row(self, atom: GroundAtom) -> Row | None:
+        """The row ``atom`` (of the pattern's predicate and arity) gives, None when it
+        does not match; :meth:`match` of a single atom."""
+        for position, value in self.checks:
+            if atom[position] != value:
+                return None
+        for position, earlier in self.repeats:
+            if atom[position] != atom[earlier]:
+                return None
+        for position, domain in self.typed:
+            if atom[position] not in domain:
+                return None
+        return tuple(atom[p] for p in self.taken)
 
 
 class QueryEngine(Protocol):
@@ -224,6 +335,9 @@ class JoinEngine:
         self.yannakakis = yannakakis
         self._plans: dict[tuple[Query, tuple[str, ...]], _Plan] = {}
         self._patterns: dict[Query, list[Pattern]] = {}
+        #: The relation of each variable bound by no positive atom, by variable and
+        #: domain: the same for every state, so made (and indexed) once.
+        self._ranges: dict[tuple[str, frozenset[str] | None], Relation] = {}
 
     def relations(
         self, query: Query, facts: FactBase, seed: dict[str, str] | None
@@ -253,8 +367,11 @@ class JoinEngine:
         for variable in query.all_variables():
             if variable not in bound:  # only in negated atoms, inequalities or answers
                 domain = query.domains.get(variable)
-                values = sorted(domain) if domain is not None else self.objects
-                relations.append(Relation((variable,), [(v,) for v in values]))
+                found = self._ranges.get((variable, domain))
+                if found is None:
+                    values = sorted(domain) if domain is not None else self.objects
+                    found = self._ranges[(variable, domain)] = Relation((variable,), [(v,) for v in values])
+                relations.append(found)
                 bound.add(variable)
         plan = self._plans.get((query, seeded))
         if plan is None:
@@ -274,11 +391,11 @@ class JoinEngine:
         rows = [r.rows for r in relations]
         columns = [r.columns for r in relations]
         for child, parent in tree:  # up: a parent keeps the rows some child row agrees with
-            rows[parent] = _semijoin(columns[parent], rows[parent], columns[child], rows[child])
+            rows[parent] = _reduce(relations[parent], rows[parent], columns[child], rows[child])
             if not rows[parent]:
                 return [], []
         for child, parent in reversed(tree):  # down
-            rows[child] = _semijoin(columns[child], rows[child], columns[parent], rows[parent])
+            rows[child] = _reduce(relations[child], rows[child], columns[parent], rows[parent])
         root = tree[-1][1] if tree else 0
         order = [root] + [child for child, _ in reversed(tree)]
         return self._join_in_order(
@@ -327,6 +444,26 @@ class JoinEngine:
             columns.extend(relation.columns[i] for i in extra)
             rows = filters.apply(columns, joined)
         return columns, rows
+
+
+def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+    """The semi-join of ``rows`` (``relation``'s, perhaps already reduced) with
+    ``other_rows``. When the relation is unreduced and many times larger, its index on
+    the shared columns is probed with the few keys of the other side, so the cost follows
+    the rows kept, not the relation's size (a large state relation, e.g. every ``on``
+    atom of a thousand blocks, against the one block held); the kept rows are sorted
+    back into filing order."""
+    if rows is relation.rows and len(other_rows) * 8 < len(rows):
+        shared = [c for c in relation.columns if c in other]
+        if shared:
+            index = relation.index(tuple(relation.columns.index(c) for c in shared))
+            theirs = _getter([other.index(c) for c in shared])
+            kept = [row for key in set(map(theirs, other_rows)) for row in index.get(key, ())]
+            if len(kept) == len(rows):
+                return rows
+            kept.sort()
+            return kept
+    return _semijoin(relation.columns, rows, other, other_rows)
 
 
 def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:

@@ -17,11 +17,12 @@ state with the same estimate held, else 2 (Lipovetzky and Geffner's BFWS(f5), wi
 from __future__ import annotations
 
 import math
+from collections import OrderedDict
 from typing import ClassVar
 
 from strips_framework.forward.budget import Budget, peak_mib
 from strips_framework.forward.openlists import AlternationOpenList, BestFirstOpenList, open_list
-from strips_framework.lifted.components import ActionInstance, LiftedEstimator, LiftedState
+from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedEstimator, LiftedState
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
 from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
@@ -29,6 +30,9 @@ from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.options import Configurable, Option
 from strips_framework.result import Result, Status
+
+#: How many recent states' fact bases a run keeps (see :attr:`LiftedRun._recent`).
+RECENT = 256
 
 
 class LiftedRun:
@@ -46,30 +50,51 @@ class LiftedRun:
         self.evaluated = 0
         self.generated = 0
         self.dead_ends = 0
-        #: The state last expanded, its number and fact base: lazy search pops its
-        #: successors next, and the conditions of their effects are read in it.
-        self._parent: tuple[int, LiftedState, FactBase | None] = (NO_PARENT, frozenset(), None)
+        #: The states (and fact bases) last expanded or generated, oldest first: a
+        #: successor's fact base is made from its parent's, and the states expanded next
+        #: are mostly among them.
+        self._recent: OrderedDict[int, tuple[LiftedState, FactBase]] = OrderedDict()
 
-    def parent(self, number: int) -> tuple[LiftedState, FactBase | None]:
-        if self._parent[0] != number:
-            self._parent = (number, self.space.state(number), None)
-        return self._parent[1], self._parent[2]
+    def parent(self, number: int) -> tuple[LiftedState, FactBase]:
+        """State ``number`` and its fact base (made from scratch when not recent), now
+        the most recent."""
+        found = self._recent.get(number)
+        if found is None:
+            state = self.space.state(number)
+            found = (state, self.successors.facts(state))
+            self.remember(number, *found)
+        else:
+            self._recent.move_to_end(number)
+        return found
 
     def remember(self, number: int, state: LiftedState, facts: FactBase) -> None:
-        self._parent = (number, state, facts)
+        recent = self._recent
+        recent[number] = (state, facts)
+        recent.move_to_end(number)
+        if len(recent) > RECENT:
+            recent.popitem(last=False)
 
-    def child(self, parent: int, step: ActionInstance) -> tuple[LiftedState, bytes, int]:
-        """The state ``step`` leads to from state ``parent``, packed, and its path cost.
-        The packing is the parent's with the few changed atoms' numbers taken out and put
-        in, not the whole state's numbers looked up again."""
+    def child(
+        self, parent: int, step: ActionInstance
+    ) -> tuple[LiftedState, bytes, int, set[GroundAtom], set[GroundAtom]]:
+        """The state ``step`` leads to from state ``parent``, packed, its path cost, and
+        the atoms it lost and gained (for :meth:`child_facts`). The packing is the
+        parent's with the few changed atoms' numbers taken out and put in, not the whole
+        state's numbers looked up again."""
         state, facts = self.parent(parent)
-        successors = self.successors
-        if facts is None and successors.schema(step[0]).effects:
-            facts = successors.facts(state)
-            self._parent = (parent, state, facts)
-        removed, added, cost = successors.change(state, facts, step)
+        removed, added, cost = self.successors.change(state, facts, step)
         packed = self.space.repack(self.space.packed[parent], removed, added)
-        return (state - removed) | added, packed, self.space.g[parent] + cost
+        # One copy of the state: ``removed`` lies in it and ``added`` outside it.
+        return state ^ (removed | added), packed, self.space.g[parent] + cost, removed, added
+
+    def child_facts(
+        self, parent: int, number: int, state: LiftedState, removed: set[GroundAtom], added: set[GroundAtom]
+    ) -> FactBase:
+        """The fact base of state ``number`` (``state``, a child of ``parent`` by
+        :meth:`child`), made from the parent's, and remembered."""
+        facts = self.successors.facts_after(state, self.parent(parent)[1], removed, added)
+        self.remember(number, state, facts)
+        return facts
 
 
 class LiftedStrategy(Configurable):
@@ -149,8 +174,8 @@ class LiftedLazyGreedySearch(LiftedStrategy):
         best_h = math.inf
         state: LiftedState = successors.task.init
         number = space.add(space.pack(state), NO_PARENT, None, 0)
+        facts = successors.facts(state)
         while True:
-            facts = successors.facts(state)
             if successors.is_goal(facts):
                 return number
             if self.preferred:
@@ -175,9 +200,10 @@ class LiftedLazyGreedySearch(LiftedStrategy):
                 if not frontier:
                     return None
                 parent, step = frontier.pop()
-                state, packed, g = run.child(parent, step)
+                state, packed, g, removed, added = run.child(parent, step)
                 if packed not in space.ids:
                     number = space.add(packed, parent, step, g)
+                    facts = run.child_facts(parent, number, state, removed, added)
                     break
 
 
@@ -201,6 +227,7 @@ class LiftedBFWS(LiftedStrategy):
             lists.append(BestFirstOpenList())
         turn = 0
         closed = bytearray()
+        estimates: list[float] = []  # by state number
         state = successors.task.init
         facts = successors.facts(state)
         if successors.is_goal(facts):
@@ -213,6 +240,7 @@ class LiftedBFWS(LiftedStrategy):
             return None
         number = space.add(space.pack(state), NO_PARENT, None, 0)
         closed.append(0)
+        estimates.append(h)
         lists[0].push(h, number)
         lists[1].push((novelty.of(state, h), h), number)
         while any(lists):
@@ -226,9 +254,8 @@ class LiftedBFWS(LiftedStrategy):
             closed[number] = 1
             budget.check(run.expanded)
             run.expanded += 1
-            state = space.state(number)
-            facts = successors.facts(state)
-            run.remember(number, state, facts)
+            state, facts = run.parent(number)
+            h = estimates[number]
             if self.preferred:
                 _, preferred = estimator.estimate_with_preferred(state)
                 preferred_steps = set(preferred)
@@ -237,22 +264,24 @@ class LiftedBFWS(LiftedStrategy):
             for step in successors.applicable(facts):
                 budget.check(run.expanded)  # each child is evaluated: a slow h adds up
                 run.generated += 1
-                child, packed, g = run.child(number, step)
+                child, packed, g, removed, added = run.child(number, step)
                 if packed in space.ids:
                     continue
                 child_number = space.add(packed, number, step, g)
-                child_facts = successors.facts(child)
+                child_facts = run.child_facts(number, child_number, child, removed, added)
                 if successors.is_goal(child_facts):
                     return child_number
                 child_h = estimator.estimate(child)
                 run.evaluated += 1
+                estimates.append(child_h)
                 if child_h == math.inf:
                     run.dead_ends += 1
                     closed.append(1)
                     continue
                 closed.append(0)
                 lists[0].push(child_h, child_number)
-                lists[1].push((novelty.of(child, child_h), child_h), child_number)
+                novel = novelty.of(child, child_h, added if child_h == h else None)
+                lists[1].push((novel, child_h), child_number)
                 if step in preferred_steps:
                     lists[2].push(child_h, child_number)
         return None
@@ -265,9 +294,16 @@ class _Novelty:
     def __init__(self) -> None:
         self._seen: dict[float, set] = {}
 
-    def of(self, state: LiftedState, h: float) -> int:
+    def of(self, state: LiftedState, h: float, added: set[GroundAtom] | None = None) -> int:
+        """``added``, when given: ``state`` is a successor of a state evaluated here
+        with the same estimate, which it differs from by gaining ``added`` (and losing
+        some). That state's atoms were all seen then, so only ``added`` can be new, and
+        the test costs what the action changed rather than the state's size."""
         seen = self._seen.setdefault(h, set())
-        new = state - seen if len(seen) else state
+        if added is not None:
+            new = [atom for atom in added if atom not in seen]
+        else:
+            new = state - seen if len(seen) else state
         if new:
             seen.update(new)
             return 1

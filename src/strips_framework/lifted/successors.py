@@ -40,6 +40,17 @@ class Successors:
             self._saturate(rules, facts)
         return facts
 
+    def facts_after(
+        self, state: LiftedState, parent: FactBase, removed: set[GroundAtom], added: set[GroundAtom]
+    ) -> FactBase:
+        """The fact base of ``state``, which the state of fact base ``parent`` becomes by
+        losing ``removed`` and gaining ``added`` (:meth:`change`): made from the parent's
+        at the changed atoms only, or from scratch when the task has axioms (their derived
+        atoms would have to be derived again)."""
+        if self._strata:
+            return self.facts(state)
+        return parent.changed(state, removed, added)
+
     def _saturate(self, rules: list[Rule], facts: FactBase) -> None:
         """Fire ``rules`` until they give no new atom (naive evaluation: a stratum of a
         planning domain's axioms is small, and most reach their fixpoint in two rounds)."""
