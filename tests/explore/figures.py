@@ -92,11 +92,11 @@ def open_page(launched: Any, path: Path, width: int = 1300, height: int = 800) -
     return page, problems
 
 
-def screenshot(page: Any, path: Path) -> Path:
+def screenshot(page: Any, path: Path, full_page: bool = False) -> Path:
     """``page`` as a PNG in a palette of 256 colours (pages of flat colours lose nothing
     visible and the file shrinks by half or more; pillow comes with matplotlib, the
-    bench extra)."""
-    page.screenshot(path=str(path))
+    bench extra); ``full_page`` takes what lies beyond the viewport too."""
+    page.screenshot(path=str(path), full_page=full_page)
     try:
         from PIL import Image
     except ImportError:
@@ -142,7 +142,7 @@ def triangle_table_light(launched: Any, folder: Path) -> Path:
     solve(["table", str(ROOT / "examples/robot-world/light.strips"), str(plan), "--html", str(table)])
     page, problems = open_page(launched, table, 1500, 560)
     page.click("#kernels button[data-kernel='all']")
-    shot = screenshot(page, folder / "triangle-table-light.png")
+    shot = screenshot(page, folder / "triangle-table-light.png", full_page=True)
     assert not problems, problems
     return shot
 
