@@ -53,7 +53,9 @@ def test_the_cpu_limit_stops_an_unbounded_search_with_timeout(tmp_path, capsys):
     document = json.loads(capsys.readouterr().out)
     assert document["status"] == "Timeout"
     assert document["limits"] == {"time": 0.2, "effort": None}
-    assert 0.2 <= document["statistics"]["cpu_seconds"] < 5
+    # The profiling timer counts CPU in kernel ticks, process_time() in nanoseconds: the
+    # two may differ by a tick, so the run is checked to have lasted about its limit.
+    assert 0.18 <= document["statistics"]["cpu_seconds"] < 5
 
 
 def test_the_default_effort_is_not_the_planners(tmp_path, capsys):
