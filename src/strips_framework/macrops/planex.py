@@ -20,7 +20,7 @@ import random
 from collections.abc import Callable, Sequence
 
 import attrs
-from attrs import field, frozen, validators
+from attrs import frozen
 
 from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.kernels import holds

@@ -18,7 +18,7 @@ import itertools
 from collections.abc import Sequence
 from typing import ClassVar
 
-from attrs import field, frozen, validators
+from attrs import field, frozen
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Formula

@@ -17,7 +17,6 @@ from collections.abc import Set as AbstractSet
 from strips_framework.logic.clauses import Literal
 from strips_framework.logic.terms import (
     ANSWER,
-    EQUALITY,
     Param,
     Term,
     is_ground,
