@@ -280,8 +280,6 @@ class RuleProgram:
             )
         return value
 
-
-
     def _add(
         self,
         clause: Clause,
