@@ -137,7 +137,11 @@ one = ["{PUSH_ONE_BOX}"]
 """)
     out = tmp_path / "results.jsonl"
     command = [*strips_command("bench", str(matrix), "-o", str(out)), "--jobs", "2", "--no-progress"]
-    runner = subprocess.Popen(command, stderr=subprocess.PIPE, text=True)
+    # A shell that starts this suite in the background hands its children SIGINT ignored
+    # (POSIX: asynchronous commands without job control); the runner must see the
+    # Ctrl-C a terminal would send, so it starts with SIGINT's default action.
+    runner = subprocess.Popen(command, stderr=subprocess.PIPE, text=True,
+                              preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     # Generous waits: on a loaded machine a start-up can take many seconds.
     deadline = time.monotonic() + 120
     while not (out.exists() and out.read_text()) and time.monotonic() < deadline:
