@@ -128,11 +128,75 @@ def test_a_problem_needing_what_the_prover_lacks_fails_before_the_search(tmp_pat
     planner = Planner.create(_write(tmp_path, 'prover = "lookup"\n'), extra_plugins=[_Plugin()])
     problem = planner.load(EXAMPLES / "robot-world" / "light.strips")
     with pytest.raises(ConfigError, match=(
-        r"light.strips: the problem has axioms that are not ground facts, which needs a "
-        r"prover with 'quantified-axioms', but prover 'lookup' \('prover.name' in .*strips.toml\) "
-        r"does not declare it"
+        r"light.strips: the problem has axioms that are rules \(definite Horn clauses\), which "
+        r"needs a prover with 'quantified-axioms' or 'definite-horn', but prover 'lookup' "
+        r"\('prover.name' in .*strips.toml\) does not declare it"
     )):
         planner.solve(problem)
+
+
+ONE_BOX = """problem one-box
+constants a b BOX1
+primitive ATR/1 AT/2
+facts
+  ATR(a)
+  AT(BOX1, a)
+  PUSHABLE(BOX1)
+{axioms}
+operator push(k, m, n)
+  pre    AT(k, m) & ATR(m) & {pushable}
+  delete AT(k, m), ATR(m)
+  add    AT(k, n), ATR(n)
+goal AT(BOX1, b)
+"""
+
+
+def _one_box(tmp_path: Path, axioms: str = "", pushable: str = "PUSHABLE(k)") -> Path:
+    path = tmp_path / "one-box.strips"
+    path.write_text(ONE_BOX.format(axioms=axioms, pushable=pushable))
+    return path
+
+
+@pytest.mark.parametrize(
+    "axioms",
+    ["", "axioms\n  forall x: BOX(x) -> PUSHABLE(x)\n  forall x, y: AT(x, y) -> PLACE(y)"],
+    ids=["facts", "safe-rules"],
+)
+def test_a_definite_horn_task_is_answered_by_a_definite_horn_prover(tmp_path, axioms):
+    planner = Planner.create(_write(tmp_path, 'prover = "joins"\n'))
+    result = planner.solve(planner.load(_one_box(tmp_path, axioms)))
+    assert result.solved and [str(s) for s in result.plan] == ["(push BOX1 a b)"]
+
+
+@pytest.mark.parametrize(
+    ("axioms", "pushable", "where"),
+    [
+        ("axioms\n  forall x: PUSHABLE(x) -> HEAVY(x) | LIGHT(x)", "PUSHABLE(k)",
+         "its axioms are not all definite Horn rules"),
+        ("axioms\n  forall x, y: PUSHABLE(x) -> NEAR(x, y)", "PUSHABLE(k)",
+         "its axioms are not all definite Horn rules"),  # y is bound by no premise
+        ("", "~FIXED(k)", "the precondition of push is not a conjunction of atoms and inequalities"),
+    ],
+    ids=["disjunctive-axiom", "unsafe-rule", "negated-precondition"],
+)
+def test_what_is_not_a_definite_horn_task_is_refused_before_a_horn_prover_sees_it(
+    tmp_path, axioms, pushable, where
+):
+    planner = Planner.create(_write(tmp_path, 'prover = "joins"\n'))
+    problem = planner.load(_one_box(tmp_path, axioms, pushable))
+    with pytest.raises(ConfigError) as error:
+        planner.solve(problem)
+    assert str(error.value) == (
+        f"{problem.source}: the problem is not a definite Horn task ({where}), but prover "
+        f"'joins' ('prover.name' in {tmp_path / 'strips.toml'}) declares 'definite-horn' "
+        "without 'quantified-axioms': it answers definite Horn tasks only"
+    )
+
+
+def test_a_first_order_prover_takes_what_a_horn_prover_refuses(tmp_path):
+    planner = Planner.create(_write(tmp_path, 'prover = "resolution"\n'))
+    problem = planner.load(_one_box(tmp_path, "axioms\n  forall x: PUSHABLE(x) -> HEAVY(x) | LIGHT(x)"))
+    assert planner.solve(problem).solved
 
 
 def test_capabilities_contradicting_admissible_are_a_plugin_error():

@@ -13,10 +13,11 @@ from pathlib import Path
 
 import pytest
 
+from strips_evaluators.goal_count import GoalCount
 from strips_evaluators.heuristics.ff import FFEstimator
-from strips_evaluators.paper import PaperEvaluator
 from strips_framework import exit_codes
 from strips_framework.cli.main import main
+from strips_framework.means_ends.evaluator import PaperEvaluator
 
 ROOT = Path(__file__).resolve().parents[1]
 THREE_BOXES = ROOT / "examples" / "three-boxes.strips"
@@ -86,12 +87,14 @@ def test_ctrl_c_in_forward_search_prints_the_statistics_so_far(capsys, monkeypat
     assert payload["statistics"]["evaluated"] >= 1
 
 
-def test_an_exception_inside_a_plugin_names_the_plugin_with_its_own_exit_code(capsys, monkeypatch):
-    patch(monkeypatch, PaperEvaluator, "evaluate", 2, ZeroDivisionError("float division by zero"))
-    assert main(["solve", str(THREE_BOXES)]) == exit_codes.PLUGIN_ERROR == 32
+def test_an_exception_inside_a_plugin_names_the_plugin_with_its_own_exit_code(tmp_path, capsys, monkeypatch):
+    patch(monkeypatch, GoalCount, "evaluate", 2, ZeroDivisionError("float division by zero"))
+    config = tmp_path / "strips.toml"
+    config.write_text('evaluator = "goal-count"\n')
+    assert main(["solve", str(THREE_BOXES), "--config", str(config)]) == exit_codes.PLUGIN_ERROR == 32
     err = capsys.readouterr().err
     assert err.startswith(
-        "strips: error: evaluator 'paper' (plugin strips-evaluators) raised "
+        "strips: error: evaluator 'goal-count' (plugin strips-evaluators) raised "
         "ZeroDivisionError: float division by zero (at "
     )
     assert err.count("\n") == 1
@@ -101,6 +104,13 @@ def test_an_exception_in_the_core_is_not_blamed_on_a_plugin(monkeypatch):
     from strips_framework.means_ends.run import MeansEndsRun
 
     monkeypatch.setattr(MeansEndsRun, "search", lambda self: 1 / 0)
+    with pytest.raises(ZeroDivisionError):
+        main(["solve", str(THREE_BOXES)])
+
+
+def test_an_exception_in_a_builtin_is_a_bug_in_the_core(monkeypatch):
+    """The paper's evaluator is the core's: its failure is a traceback, not a plugin's."""
+    patch(monkeypatch, PaperEvaluator, "evaluate", 2, ZeroDivisionError("float division by zero"))
     with pytest.raises(ZeroDivisionError):
         main(["solve", str(THREE_BOXES)])
 

@@ -39,6 +39,8 @@ def test_builtins_register_through_the_hooks():
     ]
     assert registry.names("difference") == ["uncompleted-proof"]
     assert registry.names("relevance") == ["add-list"]
+    assert registry.names("evaluator") == ["paper"]  # the means-ends default, without plugins
+    assert registry.names("prover") == ["joins"]
     assert "native" in registry.names("loader")
     assert registry.get("strategy", "means-ends").distribution is None
 
@@ -46,7 +48,8 @@ def test_builtins_register_through_the_hooks():
 def test_installed_plugins_come_from_their_distributions():
     registry = Registry(get_plugin_manager(load_entrypoints=True))
     assert registry.get("prover", "resolution").distribution == "strips-resolution-prover"
-    assert registry.get("evaluator", "paper").distribution == "strips-evaluators"
+    assert registry.get("evaluator", "goal-count").distribution == "strips-evaluators"
+    assert registry.get("evaluator", "paper").distribution is None  # the core's builtin
 
 
 def test_unknown_name_lists_the_available_ones_and_a_close_name(monkeypatch):
@@ -106,30 +109,32 @@ def test_autoload_switch(monkeypatch):
     assert Registry(get_plugin_manager()).names("prover") == ["joins"]  # the builtin one
 
 
-class _OnlyEvaluator:
+class _OnlyHeuristic:
     @hookimpl
-    def strips_register_evaluators(self):
-        from strips_evaluators.goal_count import GoalCount
+    def strips_register_heuristics(self):
+        from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
 
-        return [GoalCount]
+        return [GoalCountHeuristic]
 
 
 def test_defaults_come_from_what_is_registered(monkeypatch):
-    """The core alone: a preferred default that is missing ('resolution', 'paper') gives
-    way to the one implementation registered (the builtin 'joins' prover, the plugin's
-    'goal-count'); a table with nothing registered keeps its first preference, whose
-    lookup says what is missing."""
+    """The core alone: a preferred default that is missing ('resolution', 'ff') gives way
+    to the one implementation registered (the builtin 'joins' prover, the plugin's
+    'goal-count' heuristic); one the core has ('paper') stays; a table with nothing
+    registered keeps its first preference, whose lookup says what is missing."""
     from strips_framework.plugin.config import Config, default_name
 
     monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
-    registry = Registry(get_plugin_manager([_OnlyEvaluator()]))
+    registry = Registry(get_plugin_manager([_OnlyHeuristic()]))
     assert default_name(registry, ("prover",), ("resolution",)) == "joins"
-    assert default_name(registry, ("evaluator",), ("paper",)) == "goal-count"
+    assert default_name(registry, ("heuristic",), ("ff",)) == "goal-count"
     config = Config.default().with_registered_defaults(registry, ("prover", "evaluator", "heuristic"))
     assert config.choices["prover"].name == "joins"
-    assert config.choices["evaluator"].name == "goal-count"
-    assert config.choices["heuristic"].name == "ff"
+    assert config.choices["evaluator"].name == "paper"
+    assert config.choices["heuristic"].name == "goal-count"
+    bare = Config.default().with_registered_defaults(Registry(get_plugin_manager()), ("heuristic",))
+    assert bare.choices["heuristic"].name == "ff"
     with pytest.raises(PluginError, match=r"no \[heuristic\] chosen, and the default state heuristic 'ff' is not registered"):
-        config.registration(registry, "heuristic")
+        bare.registration(Registry(get_plugin_manager()), "heuristic")
     chosen = Config.from_dict({"prover": "resolution"}).with_registered_defaults(registry, ("prover",))
     assert chosen.choices["prover"].name == "resolution"  # what the file chose stays

@@ -27,7 +27,7 @@ def test_the_alarm_rings_after_the_deadline_not_at_it():
 #: code (or a garbage-collection callback) would; it says on stderr what it swallowed.
 _SWALLOWING_RUN = """
 import sys, time
-from strips_evaluators.paper import PaperEvaluator
+from strips_framework.means_ends.evaluator import PaperEvaluator
 from strips_framework.cli.main import main
 
 def evaluate(self, node):

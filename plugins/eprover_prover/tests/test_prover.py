@@ -1,5 +1,6 @@
-"""E behind the prover interface: answers, unique names, effort, the uncompleted proof,
-the paper's tasks, and the error when the binary is missing."""
+"""E behind the prover interface: answers, unique names, effort, the paper's tasks, and
+the error when the binary is missing (its uncompleted proof is the core's residue,
+tests/test_residue.py)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,6 @@ import pytest
 from strips_eprover_prover import EProver
 from strips_eprover_prover.binary import find_binary
 from strips_eprover_prover.encoding import parse_answers, to_tptp
-from strips_eprover_prover.residue import residue
 from strips_framework.errors import PluginError
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
@@ -93,16 +93,6 @@ def test_effort_is_processed_clauses() -> None:
     result = EProver().prove(task)
     assert result.status == GAVE_UP and result.effort_used == 5
     assert EProver().prove(task) == result
-
-
-def test_uncompleted_proof_is_the_goal_cut_down_by_the_model() -> None:
-    axioms = [unit(True, "P", "a"), Clause([(False, ("R", 0)), (True, ("Q", 0))])]
-    goal = [Clause([(False, ("P", M)), (False, ("Q", M))])]
-    texts = [str(c) for c in residue(ProofTask(axioms, goal))]
-    # ~P(m) | ~Q(m) is subsumed by ~Q(a) [m=a]? No: that one made a binding. Both stay,
-    # with the rule's subgoal ~R(a) for Q(a).
-    assert texts[0] == "~P(m) | ~Q(m)"
-    assert "~Q(a)  [m=a]" in texts and "~R(a)  [m=a]" in texts
 
 
 def test_missing_binary_is_one_clear_error() -> None:

@@ -6,8 +6,12 @@ a definite Horn program (ground facts and rules with one positive literal, no eq
 and whose negated goal is one clause of negated atoms (a conjunctive query, with the
 goal's inequalities as equations under unique names), computing the program's least
 model with the same joins and returning every answer. Anything else it refuses with
-``ValueError`` (it declares ``definite-horn``). The conformance kit checks it like any
-prover, and against the resolution prover on random Horn models.
+``ValueError`` (it declares ``definite-horn``). A least model says only that a goal
+fails, not what is left of it; the uncompleted proof a means-ends search needs is the
+core's residue (:mod:`strips_framework.worldmodel.residue`: the goal cut down by the
+model's facts and rewritten through its rules, as resolution leaves it), so the paper's
+tasks take the resolution prover's nodes under ``joins`` too. The conformance kit checks
+it like any prover, and against the resolution prover on random Horn models.
 
 :class:`ProverEngine` goes the other way: any prover answers the lifted search's queries,
 one :class:`ProofTask` per query (the atoms of the query's predicates as facts, the
@@ -19,7 +23,7 @@ is how the resolution prover serves the same search, slowly.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from itertools import combinations, product
+from itertools import product
 from typing import ClassVar
 
 from strips_framework.capabilities import (
@@ -36,12 +40,17 @@ from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param
 from strips_framework.options import Configurable
 from strips_framework.pddl.formulas import Atom
-from strips_framework.worldmodel.proving import PROVED, SATURATED, ProofResult, ProofTask, TheoremProver
+from strips_framework.worldmodel.proving import (
+    PROVED,
+    SATURATED,
+    ProofResult,
+    ProofTask,
+    TheoremProver,
+)
+from strips_framework.worldmodel.residue import residue
 
 #: Effort and answers a :class:`ProverEngine` allows a prover per query: all of them.
 UNBOUNDED = 10**9
-#: The most goal atoms whose subsets :meth:`_HornProgram.uncompleted` resolves away.
-UNCOMPLETED_ATOMS = 8
 
 
 def engine_of(prover: TheoremProver | None, task: LiftedTask) -> QueryEngine:
@@ -111,7 +120,7 @@ class JoinProver(Configurable):
         facts = program.least_model()
         answers = program.answers(facts)
         if not answers:
-            return ProofResult(SATURATED, uncompleted=program.uncompleted(facts, task.negated_goal[0]))
+            return ProofResult(SATURATED, uncompleted=residue(task))
         return ProofResult(PROVED, tuple(answers[: task.max_answers]))
 
 
@@ -122,7 +131,6 @@ class _HornProgram:
     def __init__(self, task: ProofTask) -> None:
         self._names: dict[object, str] = {}
         self._terms: dict[str, object] = {}
-        self._variables: dict[str, object] = {}
         self.facts: list[tuple[str, ...]] = []
         self.rules: list[tuple[Atom, Query]] = []
         for number, clause in enumerate(task.axioms, start=1):
@@ -178,45 +186,6 @@ class _HornProgram:
             for row in rows
         ]
 
-    def uncompleted(self, facts: FactBase, negated_goal: Clause) -> tuple[Clause, ...]:
-        """What a failed goal leaves to refute, as unit resolution with the model would
-        leave it: the negated goal, and for every proper subset of its atoms that holds
-        together under some binding, the clause of the other atoms under that binding
-        (with the goal parameters it binds). Subsets of goals of at most
-        :data:`UNCOMPLETED_ATOMS` atoms only (their number doubles with each atom)."""
-        atoms = self.goal.positive
-        if len(atoms) > UNCOMPLETED_ATOMS:
-            return (negated_goal,)
-        engine = JoinEngine(self.objects())
-        found: dict[Clause, None] = {negated_goal: None}
-        for size in range(len(atoms) - 1, 0, -1):
-            for kept in combinations(range(len(atoms)), size):
-                resolved = [atoms[i] for i in range(len(atoms)) if i not in kept]
-                variables = tuple(dict.fromkeys(t for a in resolved for t in a.args if is_variable(t)))
-                distinct = tuple(p for p in self.goal.distinct if all(t in variables or not is_variable(t) for t in p))
-                for row in engine.answers(Query(variables, tuple(resolved), (), distinct), facts):
-                    binding = dict(zip(variables, row))
-                    left = [(False, self._original(atoms[i], binding)) for i in kept]
-                    bound = tuple(
-                        sorted(
-                            ((self._variables[v], self._terms.get(value, value)) for v, value in binding.items() if type(self._variables[v]) is Param),
-                            key=lambda pair: (pair[0].name, pair[0].tag),
-                        )
-                    )
-                    found[Clause(left, bindings=bound)] = None
-        return tuple(found)
-
-    def _original(self, atom: Atom, binding: dict[str, str]) -> tuple:
-        """``atom`` under ``binding`` in the task's own terms."""
-        terms = []
-        for term in atom.args:
-            value = binding.get(term, term)
-            if is_variable(value):
-                terms.append(self._variables[value])
-            else:
-                terms.append(self._terms.get(value, value))
-        return (atom.predicate, *terms)
-
     def objects(self) -> tuple[str, ...]:
         return tuple(sorted(set(self._names.values())))
 
@@ -231,9 +200,7 @@ class _HornProgram:
 
     def _term(self, term: object) -> str:
         if type(term) is int or type(term) is Param:
-            name = f"?v{term}" if type(term) is int else f"?p{term.tag}.{term.name}"
-            self._variables[name] = term
-            return name
+            return f"?v{term}" if type(term) is int else f"?p{term.tag}.{term.name}"
         if type(term) is tuple and _has_variables(term):
             raise ValueError(f"the function term {term} has variables (not a Datalog program)")
         name = self._names.get(term)

@@ -27,6 +27,13 @@ def strips_register_difference_extractors() -> list[type]:
 
 
 @hookimpl
+def strips_register_evaluators() -> list[type]:
+    from strips_framework.means_ends.evaluator import PaperEvaluator
+
+    return [PaperEvaluator]
+
+
+@hookimpl
 def strips_register_relevance_filters() -> list[type]:
     from strips_framework.means_ends.relevance import AddListRelevance
 

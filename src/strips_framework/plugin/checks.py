@@ -12,7 +12,13 @@ import warnings
 from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
-from strips_framework.capabilities import EQUALITY, QUANTIFIED_AXIOMS, declared, requirements
+from strips_framework.capabilities import (
+    DEFINITE_HORN,
+    EQUALITY,
+    QUANTIFIED_AXIOMS,
+    declared,
+    requirements,
+)
 from strips_framework.errors import ConfigError
 from strips_framework.plugin.registry import KINDS
 
@@ -55,42 +61,81 @@ def check_combination(registry: Registry, config: Config, kinds: Iterable[str]) 
 
 def check_problem(problem: Problem, registry: Registry, config: Config) -> None:
     """Raise :class:`ConfigError` if ``problem`` uses what the chosen prover does not
-    declare: axioms beyond ground facts (``quantified-axioms``) or ``=`` (``equality``);
-    warn if the prover declares nothing. Called before a search, so a prover is never
-    asked what it cannot answer halfway through."""
+    declare (:func:`_problem_needs`), or if the prover answers definite Horn tasks only
+    (it declares ``definite-horn`` without ``quantified-axioms``) and the problem is not
+    one; warn if the prover declares nothing. Called before a search, so a prover is
+    never asked what it cannot answer halfway through."""
     prover = registry.get("prover", config.choices["prover"].name)
     have = declared(prover.cls, "prover")
-    for capability, where in _problem_needs(problem).items():
-        if have is not None and capability in have:
-            continue
-        message = (
-            f"{problem.source}: the problem has {where}, which needs a prover with "
-            f"{capability!r}, but prover {prover.name!r} ('prover.name' in {config.source}) "
+    shape = _ProblemShape(problem)
+    where_chosen = f"prover {prover.name!r} ('prover.name' in {config.source}) "
+    if have is not None and DEFINITE_HORN in have and QUANTIFIED_AXIOMS not in have and shape.beyond_horn:
+        raise ConfigError(
+            f"{problem.source}: the problem is not a definite Horn task ({shape.beyond_horn}), "
+            f"but {where_chosen}declares {DEFINITE_HORN!r} without {QUANTIFIED_AXIOMS!r}: "
+            "it answers definite Horn tasks only"
         )
+    for alternatives, where in _problem_needs(shape).items():
+        if have is not None and have & set(alternatives):
+            continue
+        wanted = " or ".join(repr(c) for c in alternatives)
+        message = f"{problem.source}: the problem has {where}, which needs a prover with {wanted}, but {where_chosen}"
         if have is None:
             warnings.warn(message + "declares no capabilities", stacklevel=3)
         else:
             raise ConfigError(message + "does not declare it")
 
 
-def _problem_needs(problem: Problem) -> dict[str, str]:
-    """The prover capabilities a problem needs, each with where the need comes from.
-    (The logic is imported here: a forward search on PDDL never calls this.)"""
-    from strips_framework.logic.formulas import Atomic, atoms_of
-    from strips_framework.logic.terms import EQUALITY as EQUALS_SIGN
+class _ProblemShape:
+    """What of a problem's logic a prover's capabilities are checked against: where it
+    uses equality, whether its axioms are ground facts or safe definite Horn rules, and
+    where it first leaves definite Horn tasks (:mod:`strips_framework.logic.horn`).
+    (The logic is imported here: a forward search on PDDL never builds one.)"""
 
+    def __init__(self, problem: Problem) -> None:
+        from strips_framework.logic.cnf import SkolemNames, clausify, negated_goal_clauses
+        from strips_framework.logic.formulas import Atomic, atoms_of
+        from strips_framework.logic.horn import is_conjunctive_query, is_datalog_rule
+        from strips_framework.logic.terms import EQUALITY as EQUALS_SIGN
+
+        skolem = SkolemNames()
+        self.ground_facts = all(isinstance(axiom, Atomic) for axiom in problem.axioms)
+        self.horn_axioms = all(
+            is_datalog_rule(clause)
+            for number, axiom in enumerate(problem.axioms, start=1)
+            for clause in clausify(axiom, label=f"axiom {number}", skolem=skolem)
+        )
+        goals = [
+            ("the goal", problem.goal),
+            *((f"the precondition of {s.name}", s.precondition) for s in problem.operators),
+        ]
+        #: Why the problem is not a definite Horn task ("" when it is).
+        self.beyond_horn = "" if self.horn_axioms else "its axioms are not all definite Horn rules"
+        for where, goal in goals:
+            if self.beyond_horn:
+                break
+            if not is_conjunctive_query(negated_goal_clauses(goal, skolem), problem.unique_names):
+                self.beyond_horn = f"{where} is not a conjunction of atoms and inequalities"
+        formulas = [*goals, *(("the axioms", axiom) for axiom in problem.axioms)]
+        #: Where ``=`` is first used ("" when nowhere).
+        self.equality = next(
+            (where for where, f in formulas if any(atom[0] == EQUALS_SIGN for atom in atoms_of(f))), ""
+        )
+
+
+def _problem_needs(shape: _ProblemShape) -> dict[tuple[str, ...], str]:
+    """The prover capabilities a problem needs, each as the capabilities any one of which
+    will do, with where the need comes from. A definite Horn task (safe Datalog rules,
+    goals that are conjunctions of atoms and, under unique names, inequalities) is
+    answered by a prover declaring ``definite-horn`` as well as by one declaring
+    ``quantified-axioms`` (and ``equality``, for its inequalities)."""
+    horn = () if shape.beyond_horn else (DEFINITE_HORN,)
     needs = {}
-    if any(not isinstance(axiom, Atomic) for axiom in problem.axioms):
-        needs[QUANTIFIED_AXIOMS] = "axioms that are not ground facts"
-    formulas = [
-        ("the goal", problem.goal),
-        *(("the axioms", axiom) for axiom in problem.axioms),
-        *((f"the precondition of {s.name}", s.precondition) for s in problem.operators),
-    ]
-    for where, formula in formulas:
-        if any(atom[0] == EQUALS_SIGN for atom in atoms_of(formula)):
-            needs[EQUALITY] = f"'=' in {where}"
-            break
+    if not shape.ground_facts:
+        words = "axioms that are rules (definite Horn clauses)" if horn else "axioms that are not ground facts"
+        needs[(QUANTIFIED_AXIOMS, *horn)] = words
+    if shape.equality:
+        needs[(EQUALITY, *horn)] = f"'=' in {shape.equality}"
     return needs
 
 

@@ -11,7 +11,7 @@ resolution prover's): E's search is deterministic, so the same task gives the sa
 (and the one non-deterministic outcome).
 
 E keeps no uncompleted proof. What the difference extractor gets instead is
-:func:`~strips_eprover_prover.residue.residue`: the negated goal and its resolvents with
+:func:`~strips_framework.worldmodel.residue.residue`: the negated goal and its resolvents with
 the model's clauses, a few levels deep, less the clauses another one subsumes. For
 ``P(a) & Q(a)`` in a model with ``P(a)`` that is ``~Q(a)``, the part of the goal the model
 does not give, which is what means-ends analysis needs.
@@ -39,7 +39,6 @@ from strips_eprover_prover.encoding import (
     parse_answers,
     to_tptp,
 )
-from strips_eprover_prover.residue import Residue, residue
 from strips_framework.capabilities import (
     ANSWERS,
     EFFORT_BOUND,
@@ -59,6 +58,7 @@ from strips_framework.worldmodel.proving import (
     ProofResult,
     ProofTask,
 )
+from strips_framework.worldmodel.residue import Residue, residue
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 _PROVED = {"Theorem", "Unsatisfiable", "ContradictoryAxioms"}

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from strips_evaluators.features import subgoals, unproved_literals
-from strips_evaluators.options import weight
+from strips_framework.means_ends.features import subgoals, unproved_literals
 from strips_framework.means_ends.node import Node
+from strips_framework.means_ends.weights import weight
 from strips_framework.options import Configurable
 
 

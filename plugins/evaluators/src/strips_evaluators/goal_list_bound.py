@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from strips_evaluators.features import subgoals
 from strips_framework.capabilities import ADMISSIBLE
+from strips_framework.means_ends.features import subgoals
 from strips_framework.means_ends.node import Node
 from strips_framework.options import Configurable
 

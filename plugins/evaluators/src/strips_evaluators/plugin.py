@@ -22,14 +22,12 @@ def strips_register_evaluators() -> list[type[NodeEvaluator]]:
     from strips_evaluators.breadth_first import BreadthFirst
     from strips_evaluators.goal_count import GoalCount
     from strips_evaluators.goal_list_bound import GoalListBound
-    from strips_evaluators.paper import PaperEvaluator
     from strips_evaluators.relaxed_max import RelaxedMaxEvaluator
     from strips_evaluators.relaxed_plan import RelaxedPlanEvaluator
 
-    return [
-        PaperEvaluator, BreadthFirst, GoalCount, GoalListBound, RelaxedPlanEvaluator,
-        RelaxedMaxEvaluator,
-    ]
+    # The paper's evaluator is the core's (strips_framework.means_ends.evaluator), so that
+    # the means-ends search has its default evaluator without this plugin.
+    return [BreadthFirst, GoalCount, GoalListBound, RelaxedPlanEvaluator, RelaxedMaxEvaluator]
 
 
 @hookimpl

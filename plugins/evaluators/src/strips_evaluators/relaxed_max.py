@@ -19,11 +19,11 @@ from typing import ClassVar
 
 from attrs import frozen
 
-from strips_evaluators.features import subgoals
 from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
+from strips_framework.means_ends.features import subgoals
 from strips_framework.means_ends.node import Node
 from strips_framework.options import Configurable
 from strips_framework.worldmodel.problem import OperatorSchema

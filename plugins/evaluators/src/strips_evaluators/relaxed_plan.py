@@ -25,10 +25,10 @@ from typing import ClassVar
 
 from attrs import define, field, frozen
 
-from strips_evaluators.options import weight
 from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.node import Node
+from strips_framework.means_ends.weights import weight
 from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel

@@ -1,15 +1,21 @@
-"""The evaluation function of the paper (II.B and V), as a weighted sum of its factors."""
+"""The builtin node evaluator: the evaluation function of the paper (II.B and V), as a
+weighted sum of its factors.
+
+It is the core's, not a plugin's, because it is the means-ends search's default: with
+plugin autoload off (``STRIPS_DISABLE_PLUGIN_AUTOLOAD``) the core alone still solves the
+paper's tasks, with the paper's node counts. The other evaluators come with
+strips-evaluators."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import ClassVar
 
-from strips_evaluators.features import subgoals, unproved_literals
-from strips_evaluators.options import weight, weight_table
 from strips_framework.logic.formulas import atoms_of
 from strips_framework.logic.terms import EQUALITY
+from strips_framework.means_ends.features import subgoals, unproved_literals
 from strips_framework.means_ends.node import Node
+from strips_framework.means_ends.weights import weight, weight_table
 from strips_framework.options import Configurable
 
 

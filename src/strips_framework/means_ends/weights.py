@@ -1,5 +1,5 @@
-"""The evaluators' weight options, declared alike so every evaluator refuses bad weights
-alike.
+"""The node evaluators' weight options (the core's paper evaluator and the plugins'),
+declared alike so every evaluator refuses bad weights alike.
 
 Options arrive from the TOML config as keyword arguments. A weight must be a finite,
 non-negative number: a negative weight would turn a penalty into a reward and silently

@@ -1,7 +1,7 @@
 """Measurements of a search node that several evaluators combine.
 
 Kept in one place so that "goals left" and "unproved literals" mean the same thing in
-every evaluator that reports them.
+every evaluator that reports them, the core's (:mod:`.evaluator`) and the plugins'.
 """
 
 from __future__ import annotations

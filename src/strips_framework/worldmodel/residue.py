@@ -1,12 +1,17 @@
-"""What is left of a goal E could not prove: the uncompleted proof E does not keep.
+"""What is left of a goal a prover could not prove, for provers that keep no uncompleted
+proof.
 
-Means-ends analysis needs the clauses still to be refuted (paper, III.C). E only says
-"not proved", so they are made here, the way a set-of-support search makes them: the
-negated goal, then its binary resolvents with the model's clauses (breadth first, with the
+Means-ends analysis needs the clauses still to be refuted (paper, III.C). A saturation
+prover keeps them as it goes; E and the join engine (``joins``) only say "not proved".
+For them they are made here, the way a set-of-support search makes them: the negated
+goal, then its binary resolvents with the model's clauses (breadth first, with the
 paper's parameter rules through the core's unifier), at most :data:`LIMIT` clauses, and
 then every clause dropped that another one subsumes with no more parameter bindings.
 Ground facts cut a goal down (``~P(a) | ~Q(a)`` with ``P(a)`` leaves ``~Q(a)``), the model's
-rules turn it into what would establish it.
+rules turn it into what would establish it (with ``CONNECTS(x, r1, r2) -> INROOM(x, r1)``,
+``~INROOM(ROBOT, ROOM4)`` also leaves ``~CONNECTS(ROBOT, ROOM4, x)``), so an operator that
+adds a rule's premise is found relevant. One implementation serves every such prover, so
+their differences, and the searches driven by them, agree with the resolution prover's.
 """
 
 from __future__ import annotations

@@ -1,14 +1,16 @@
+"""The paper's evaluator (the core's builtin one), term by term on hand-built nodes."""
+
 from __future__ import annotations
 
 import pytest
 
-from strips_framework.options import OptionError
-
-from strips_evaluators.paper import PaperEvaluator
 from strips_framework.logic.formulas import And, Atomic, Not
+from strips_framework.means_ends.evaluator import PaperEvaluator
+from strips_framework.options import OptionError
+from strips_framework.testing.nodes import hand_built_node as make_node
 
 
-def test_each_factor_counts_with_its_weight(make_node) -> None:
+def test_each_factor_counts_with_its_weight() -> None:
     evaluator = PaperEvaluator(
         goal_weight=1,
         predicate_weight=10,
@@ -27,7 +29,7 @@ def test_each_factor_counts_with_its_weight(make_node) -> None:
     assert evaluator.evaluate(node) == 2 + 3 * 10 + 2 * 100 + 1000 + 2 * 10_000 + 100_000
 
 
-def test_predicate_table_overrides_the_default_and_equality_is_free(make_node) -> None:
+def test_predicate_table_overrides_the_default_and_equality_is_free() -> None:
     evaluator = PaperEvaluator(
         goal_weight=0, difference_weight=0, predicate_weight=1, predicate_weights={"INROOM": 5}
     )
@@ -36,11 +38,11 @@ def test_predicate_table_overrides_the_default_and_equality_is_free(make_node) -
     assert evaluator.evaluate(make_node(subgoals=[goal])) == 5 + 1
 
 
-def test_top_goal_is_not_counted(make_node) -> None:
+def test_top_goal_is_not_counted() -> None:
     assert PaperEvaluator().evaluate(make_node(difference=None)) == 0
 
 
-def test_fewer_goals_and_smaller_differences_win(make_node) -> None:
+def test_fewer_goals_and_smaller_differences_win() -> None:
     evaluator = PaperEvaluator()
     shallow = make_node(subgoals=["A"])
     deep = make_node(subgoals=["A", "B"])
@@ -50,7 +52,7 @@ def test_fewer_goals_and_smaller_differences_win(make_node) -> None:
     )
 
 
-def test_defaults_lean_depth_first(make_node) -> None:
+def test_defaults_lean_depth_first() -> None:
     """A fresh subgoal beats its parent once the parent has made it, and applying the
     subgoal's operator (which pops it) beats the subgoal node."""
     evaluator = PaperEvaluator()
@@ -61,7 +63,7 @@ def test_defaults_lean_depth_first(make_node) -> None:
     assert evaluator.evaluate(applied) < evaluator.evaluate(child)
 
 
-def test_next_pending_instance_is_the_one_measured(make_node) -> None:
+def test_next_pending_instance_is_the_one_measured() -> None:
     evaluator = PaperEvaluator(difference_weight=0, pending_weight=1)
     assert evaluator.evaluate(make_node(pending=[2, 0])) == 2
     assert evaluator.evaluate(make_node(pending=[])) == 0
