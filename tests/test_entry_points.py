@@ -18,7 +18,7 @@ from strips_framework.plugin.manager import get_plugin_manager
 from strips_framework.plugin.registry import Registry
 registry = Registry(get_plugin_manager(load_entrypoints=True))
 print(",".join(registry.names("heuristic")))
-print(registry.get("evaluator", "paper").distribution)
+print(registry.get("evaluator", "goal-count").distribution)
 print("importlib.metadata" in sys.modules)
 """
 
@@ -30,7 +30,7 @@ from strips_framework.plugin.registry import Registry
 registry = Registry.from_plugins()
 print(",".join(registry.names("heuristic")))
 print(registry.get("heuristic", sys.argv[1]).cls.__name__)
-print(registry.get("evaluator", "paper").distribution)
+print(registry.get("evaluator", "goal-count").distribution)
 print("pluggy" in sys.modules, "strips_evaluators.heuristics.lmcut" in sys.modules)
 """
 

@@ -56,9 +56,10 @@ VOCABULARY: dict[str, dict[str, str]] = {
         COMPLETE: "with enough effort every goal that follows is proved, and every binding "
         "among the answers is found when max_answers allows",
         DEFINITE_HORN: "answers every task whose axioms are definite Horn clauses (ground "
-        "facts, rules with one positive literal, no equations) and whose negated goal is "
-        "one clause of negated atoms (and, under unique names, the goal's inequalities); "
-        "refuses other tasks with ValueError",
+        "facts, rules with one positive literal whose head's variables occur in its body, "
+        "no equations, no function terms with variables: logic.horn.is_datalog_rule) and "
+        "whose negated goal is one clause of negated atoms (and, under unique names, the "
+        "goal's inequalities); refuses other tasks with ValueError",
         ALL_ANSWERS: "finds every answer in one pass, however large max_answers is, at a "
         "cost that does not grow with the effort (what the lifted search asks for)",
         EFFORT_BOUND: "task.effort bounds the work deterministically: the same task gives "

@@ -55,9 +55,10 @@ COMPONENTS = (
     "strategy", "prover", "difference", "relevance", "evaluator", "heuristic", "learner"
 )
 #: What each table takes when the config file names no implementation: the first of these
-#: names that is registered (:func:`default_name`). Most come from plugin distributions
-#: (``resolution`` from strips-resolution-prover, ``paper`` and ``ff`` from
-#: strips-evaluators), so with plugin autoload off a run names what it needs itself.
+#: names that is registered (:func:`default_name`), else the one registered. Two come
+#: from plugin distributions (``resolution`` from strips-resolution-prover, ``ff`` from
+#: strips-evaluators); with plugin autoload off the prover is the builtin ``joins`` and
+#: the means-ends search runs on the core alone (docs/config.md).
 DEFAULTS: dict[str, tuple[str, ...]] = {
     "strategy": ("means-ends",),
     "prover": ("resolution",),
