@@ -3,23 +3,13 @@ validates PDDL plans, checked). The runs skip when the anchors are not installed
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
+from shared_bench import small_bench
 
 from strips_framework.bench import anchors
 from strips_framework.cli.main import main
 
 from .conftest import read_rows
-
-
-def _ipc_task() -> Path | None:
-    """An IPC task from shared/bench/ipc beside the repository, if there is one."""
-    for parent in Path(__file__).resolve().parents:
-        task = parent / "shared" / "bench" / "ipc" / "gripper" / "task01.pddl"
-        if task.is_file():
-            return task
-    return None
 
 
 def test_expansions_are_read_from_each_planners_output():
@@ -37,9 +27,7 @@ def test_expansions_are_read_from_each_planners_output():
 def test_an_anchor_solves_an_ipc_task(planner, table, write_matrix, tmp_path):
     if anchors.planner_command(planner) is None:
         pytest.skip(anchors.missing_note(planner))
-    task = _ipc_task()
-    if task is None:
-        pytest.skip("shared/bench/ipc not found")
+    task = small_bench("ipc") / "gripper" / "task01.pddl"
     matrix = write_matrix(
         f'[limits]\ntime = 60\nmemory = 4096\n[problems]\ng = ["{task}"]\n'
         f"[configs.anchor]\n{table}\n"

@@ -7,10 +7,12 @@ import subprocess
 import sys
 from pathlib import Path
 
+from shared_bench import small_bench
+
 DATA = Path(__file__).parents[1] / "pddl" / "data"
 BLOCKS = Path(__file__).parents[2] / "examples" / "pddl" / "blocksworld"
 KIT = Path(__file__).parents[2] / "src" / "strips_framework" / "testing" / "tasks"
-IPC = Path(__file__).parents[3] / "shared" / "bench" / "ipc"
+IPC = small_bench("ipc")
 
 SCRIPT = """
 import sys
@@ -37,10 +39,8 @@ def test_same_grounding_whatever_the_hash_seed():
     files = [DATA / "rooms-domain.pddl", DATA / "rooms-2.pddl",
              BLOCKS / "domain.pddl", BLOCKS / "p4.pddl",  # enough lines without ../shared
              KIT / "gripper-domain.pddl", KIT / "gripper-3.pddl",
-             KIT / "delivery-domain.pddl", KIT / "delivery-2.pddl"]
-    depot = IPC / "depot"
-    if depot.is_dir():
-        files += [depot / "domain.pddl", depot / "task02.pddl"]
+             KIT / "delivery-domain.pddl", KIT / "delivery-2.pddl",
+             IPC / "depot" / "domain.pddl", IPC / "depot" / "task02.pddl"]
     first = grounded_with_seed("1", files)
     assert first.count("\n") > 100
     assert grounded_with_seed("2", files) == first

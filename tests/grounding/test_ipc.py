@@ -1,21 +1,19 @@
-"""Every shared IPC domain's first task parses and grounds, and its initial state and
+"""Every IPC domain's first task (../shared, or the repository's copy) parses and grounds, and its initial state and
 applicable operators agree with the lifted semantics."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
+from shared_bench import small_bench
 
 from strips_framework.grounding import ground
 from strips_framework.pddl import find_domain, load_task
 
-IPC = Path(__file__).parents[3] / "shared" / "bench" / "ipc"
+IPC = small_bench("ipc")
 
-DOMAINS = sorted(path.name for path in IPC.iterdir() if path.is_dir()) if IPC.is_dir() else []
+DOMAINS = sorted(path.name for path in IPC.iterdir() if path.is_dir())
 
 
-@pytest.mark.skipif(not DOMAINS, reason="the shared IPC benchmarks are not available")
 @pytest.mark.parametrize("domain", DOMAINS)
 def test_first_task_grounds(domain):
     problem = IPC / domain / "task01.pddl"

@@ -10,6 +10,7 @@ from itertools import product
 from pathlib import Path
 
 import pytest
+from shared_bench import small_bench
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
@@ -17,7 +18,7 @@ from strips_framework.pddl import PddlTask, find_domain, load_task
 from strips_framework.pddl.validate import PlanValidator
 
 DATA = Path(__file__).parents[1] / "pddl" / "data"
-IPC = Path(__file__).parents[3] / "shared" / "bench" / "ipc"
+IPC = small_bench("ipc")
 
 LOCAL = [
     ("rooms-domain.pddl", "rooms-1.pddl"),
@@ -78,7 +79,6 @@ def test_local_tasks_agree_on_random_walks(domain, problem):
         walk_and_compare(task, steps=15, seed=seed)
 
 
-@pytest.mark.skipif(not IPC.is_dir(), reason="the shared IPC benchmarks are not available")
 @pytest.mark.parametrize("domain", SMALL_IPC)
 def test_ipc_first_tasks_agree_on_a_random_walk(domain):
     problem = IPC / domain / "task01.pddl"

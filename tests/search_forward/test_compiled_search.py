@@ -2,7 +2,7 @@
 against their pure-Python references (``reference_run``): the same status, plan and
 counts, with and without preferred operators, for lazy greedy search, A*, weighted A* and
 eager greedy search, on the hand-written PDDL tasks and the first two tasks of every
-shared IPC domain (skipped without ``shared/bench/ipc``).
+IPC domain (``../shared``, or the repository's copy of those tasks).
 
 Expansions depend on every tie the open lists break and on when the preferred list is
 boosted, so any difference in the order of pops shows. The estimator is goal counting
@@ -15,7 +15,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from shared_bench import shared_bench
+from shared_bench import small_bench
 
 from strips_framework.forward.base import ForwardStrategy, SearchRun
 from strips_framework.forward.eager import AStarSearch, GreedySearch, WeightedAStarSearch
@@ -28,8 +28,8 @@ from strips_framework.pddl import find_domain, load_task
 
 DATA = Path(__file__).resolve().parents[1] / "pddl" / "data"
 LOCAL = ["briefcase-2", "elevator-1", "switches-1", "rooms-2", "crates-3", "lamps-1", "blocks-3"]
-IPC = shared_bench("ipc")
-IPC_TASKS = [(p.name, n) for p in sorted(IPC.iterdir()) if p.is_dir() for n in (1, 2)] if IPC else []
+IPC = small_bench("ipc")
+IPC_TASKS = [(p.name, n) for p in sorted(IPC.iterdir()) if p.is_dir() for n in (1, 2)]
 
 
 class GoalCount:

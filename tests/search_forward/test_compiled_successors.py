@@ -12,7 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from shared_bench import shared_bench
+from shared_bench import small_bench
 
 from strips_framework.compiled import PURE_PYTHON_SWITCH
 from strips_framework.forward.breadth_first import BreadthFirstSearch
@@ -34,8 +34,8 @@ LOCAL = [
     ("lamps-domain.pddl", "lamps-1.pddl"),
     ("blocks-domain.pddl", "blocks-3.pddl"),
 ]
-IPC = shared_bench("ipc")
-IPC_DOMAINS = sorted(p.name for p in IPC.iterdir() if p.is_dir()) if IPC else []
+IPC = small_bench("ipc")
+IPC_DOMAINS = sorted(p.name for p in IPC.iterdir() if p.is_dir())
 STATES = 400
 
 

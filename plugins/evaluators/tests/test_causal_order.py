@@ -7,7 +7,7 @@ operators; both explorers (compiled and reference) must follow it."""
 from __future__ import annotations
 
 import pytest
-from shared_bench import shared_bench
+from shared_bench import small_bench
 
 from strips_evaluators.heuristics.causal_order import causal_order
 from strips_evaluators.heuristics.exploration import explorer
@@ -45,7 +45,7 @@ def test_the_influenced_fact_is_explored_first_and_its_operator_supports(make_ta
     assert [task.operators[op].name for op in preferred] == ["(by-package)"]
 
 
-IPC = shared_bench("ipc")
+IPC = small_bench("ipc")
 #: The first six steps of Fast Downward's plan for depot task05.
 FD_PLAN_START = [
     "(drive truck1 distributor0 depot0)",
@@ -63,8 +63,6 @@ def test_depot_relaxed_plans_share_a_truck_as_fast_downwards_do(compiled):
     crate9, both trucks at distributor1): Fast Downward's hFF is 35, with one truck
     carrying everything; ascending fact order gives 39, the relaxed plan loading crate9
     into the other truck and driving both."""
-    if IPC is None:
-        pytest.skip("shared/bench/ipc not found")
     problem = IPC / "depot" / "task05.pddl"
     task = ground(load_task(find_domain(problem), problem))
     by_name = {op.name: op for op in task.operators}

@@ -5,7 +5,7 @@ search uses them.
 
 The tasks: the hand-written PDDL tasks of the core's tests (conditional effects, derived
 predicates, negative preconditions), seeded random tasks, and the first tasks of every
-shared IPC domain (skipped without ``shared/bench/ipc``). The compiled module is built by
+IPC domain (``../shared``, or the repository's copy of those tasks). The compiled module is built by
 ``pip install``; a missing build fails here rather than passing unnoticed.
 """
 
@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 from random_tasks import random_task
-from shared_bench import shared_bench
+from shared_bench import small_bench
 
 from strips_evaluators.heuristics.exploration import explorer
 from strips_evaluators.heuristics.ff import FFHeuristic
@@ -39,8 +39,8 @@ LOCAL = [
     ("crates-domain.pddl", "crates-3.pddl"),
     ("blocks-domain.pddl", "blocks-3.pddl"),
 ]
-IPC = shared_bench("ipc")
-IPC_DOMAINS = sorted(p.name for p in IPC.iterdir() if p.is_dir()) if IPC else []
+IPC = small_bench("ipc")
+IPC_DOMAINS = sorted(p.name for p in IPC.iterdir() if p.is_dir())
 STATES = 300
 
 
@@ -49,8 +49,6 @@ def local_task(domain: str, problem: str) -> GroundTask:
 
 
 def ipc_task(domain: str, number: int = 1) -> GroundTask:
-    if IPC is None:
-        pytest.skip("shared/bench/ipc not found")
     problem = IPC / domain / f"task{number:02d}.pddl"
     return ground(load_task(find_domain(problem), problem))
 

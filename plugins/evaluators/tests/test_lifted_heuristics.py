@@ -2,7 +2,7 @@
 search reaches (up to a bound) in small tasks: local PDDL tasks, random lifted tasks with
 types, constants, equality, negative and disjunctive preconditions, derived predicates,
 conditional effects and action costs (:mod:`random_pddl`), and the first task of a few
-IPC domains when the shared benchmarks are there.
+IPC domains (../shared, or the repository's copy of them).
 
 hadd, hmax and goal count must be equal. hFF may differ where several supporters are
 equally cheap, so it is checked for what holds whatever the choice: it lies between hmax
@@ -19,6 +19,7 @@ from pathlib import Path
 
 import pytest
 from random_pddl import random_pddl_task
+from shared_bench import small_bench
 
 from strips_evaluators.heuristics.additive import AdditiveHeuristic
 from strips_evaluators.heuristics.ff import FFHeuristic
@@ -41,7 +42,7 @@ from strips_framework.pddl import PddlTask, find_domain, load_task
 
 ROOT = Path(__file__).parents[3]
 DATA = ROOT / "tests" / "pddl" / "data"
-IPC = ROOT.parent / "shared" / "bench" / "ipc"
+IPC = small_bench("ipc")
 LOCAL = ["blocks-3", "briefcase-2", "crates-3", "elevator-1", "lamps-1", "rooms-1", "rooms-2",
          "switches-1"]  # fmt: skip
 SMALL_IPC = ["blocks", "gripper", "logistics", "miconic", "satellite", "rovers"]
@@ -160,7 +161,6 @@ def test_random_tasks(seed):
     compare(random_pddl_task(seed), limit=40)
 
 
-@pytest.mark.skipif(not IPC.is_dir(), reason="the shared IPC benchmarks are not available")
 @pytest.mark.parametrize("domain", SMALL_IPC)
 def test_ipc_first_tasks(domain):
     problem = IPC / domain / "task01.pddl"

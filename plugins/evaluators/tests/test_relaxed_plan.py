@@ -7,6 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
+from shared_bench import small_bench
 
 from strips_evaluators import relaxed_plan
 from strips_evaluators.relaxed_plan import (
@@ -181,15 +182,13 @@ def test_one_scorer_gives_each_model_its_own_costs() -> None:
 
 
 LOCAL_PDDL = Path(__file__).parents[3] / "tests" / "pddl" / "data"
-IPC = Path(__file__).parents[4] / "shared" / "bench" / "ipc"
+IPC = small_bench("ipc")
 TRANSLATABLE = ["blocks-3", "rooms-1", "crates-3", "lamps-1"]
 IPC_TASKS = ["logistics/task01", "gripper/task01", "depot/task01", "rovers/task01"]
 
 
 def _translated(name: str) -> tuple[Path, Path]:
     if "/" in name:
-        if not IPC.is_dir():
-            pytest.skip("the shared IPC benchmarks are not available")
         return IPC / name.split("/")[0] / "domain.pddl", IPC / f"{name}.pddl"
     return LOCAL_PDDL / (name.rsplit("-", 1)[0] + "-domain.pddl"), LOCAL_PDDL / f"{name}.pddl"
 

@@ -9,26 +9,22 @@ from pathlib import Path
 
 import pytest
 import unified_planning.test.examples as up_examples
+from shared_bench import small_bench
 from unified_planning.engines import PlanGenerationResultStatus as UpStatus
 from unified_planning.engines import ValidationResultStatus
 from unified_planning.exceptions import UPUsageError
 from unified_planning.io import PDDLReader
-from shared_bench import shared_bench
 from unified_planning.shortcuts import OneshotPlanner, PlanValidator, get_environment
 
 import up_strips
 
 ROOT = Path(__file__).resolve().parents[3]
 BLOCKS = ROOT / "examples" / "pddl" / "blocksworld"
-#: Five IPC tasks of the shared benchmark set, one per domain.
+#: Five IPC tasks, one per domain.
 IPC_TASKS = ["blocks/task01", "gripper/task01", "logistics/task01", "miconic/task01",
              "depot/task01"]
 
 get_environment().credits_stream = None
-
-
-def _shared_ipc() -> Path | None:
-    return shared_bench("ipc")  # ../shared, or the repository's copy of part of it
 
 
 def _builtin_cases(module: str) -> dict[str, object]:
@@ -143,9 +139,7 @@ def test_unsupported_problems_are_not_claimed():
 
 @pytest.mark.parametrize("task", IPC_TASKS)
 def test_shared_ipc_task(task):
-    ipc = _shared_ipc()
-    if ipc is None:
-        pytest.skip("shared/bench/ipc is not available")
+    ipc = small_bench("ipc")  # ../shared, or the repository's copy of these tasks
     domain, problem_file = ipc / task.split("/")[0] / "domain.pddl", ipc / f"{task}.pddl"
     problem = PDDLReader().parse_problem(str(domain), str(problem_file))
     with OneshotPlanner(name="strips") as planner:
