@@ -174,19 +174,24 @@ class Planner(Record):
             return self
         return Planner(self.registry, config, self.progress, self.observers).checked()
 
-    def load(self, path: Path) -> Problem:
+    def load(self, path: Path | str) -> Problem:
         """Read a problem file with the loader registered for its suffix."""
+        path = Path(path)
         if not is_file(path):
             what = "is a folder, not a problem file" if is_dir(path) else "no such problem file"
             raise InputError(str(path), None, None, what)
         loader = self.registry.loader_for(path.suffix).cls()
         return loader.load(path)
 
-    def load_pddl(self, problem_path: Path, domain_path: Path | None = None) -> PddlTask:
+    def load_pddl(
+        self, problem_path: Path | str, domain_path: Path | str | None = None
+    ) -> PddlTask:
         """Read a PDDL problem and its domain (found beside it when not given)."""
         from strips_framework.pddl import find_domain, load_task
 
-        return load_task(domain_path or find_domain(problem_path), problem_path)
+        problem_path = Path(problem_path)
+        domain = find_domain(problem_path) if domain_path is None else Path(domain_path)
+        return load_task(domain, problem_path)
 
     def prover(self) -> TheoremProver:
         return self.config.build(self.registry, "prover")
