@@ -81,3 +81,15 @@ def test_strips_plugins_in_a_fresh_process_lists_the_builtins_only():
     assert any(line.startswith("  paper ") and line.endswith("builtin (strips_framework.plugin.builtins)") for line in lines)
     assert any(line.startswith("  joins ") and "builtin" in line for line in lines)
     assert "strips-evaluators" not in run.stdout and "strips-resolution-prover" not in run.stdout
+
+
+def test_a_pddl_task_with_the_core_alone_is_searched_lifted_and_says_why():
+    """The core has lifted heuristics but no ground one: the default PDDL run searches
+    without grounding instead of stopping at the missing 'ff'."""
+    domain = EXAMPLES / "pddl" / "blocksworld" / "domain.pddl"
+    run = _core_alone(["solve", str(domain), str(domain.parent / "p4.pddl"), "--json"])
+    assert run.returncode == 0, run.stderr
+    assert "strategy lifted-gbfs: no state heuristic is registered" in run.stderr
+    payload = json.loads(run.stdout)
+    assert payload["status"] == "solved"
+    assert payload["family"] == "lifted"

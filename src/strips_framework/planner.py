@@ -21,7 +21,7 @@ from strips_framework.errors import ConfigError, InputError
 from strips_framework.limits import Clock
 from strips_framework.pddl.files import is_pddl
 from strips_framework.plugin.checks import check_combination, check_problem
-from strips_framework.plugin.config import PDDL_DEFAULT_STRATEGY, Choice, Config
+from strips_framework.plugin.config import DEFAULTS, PDDL_DEFAULT_STRATEGY, Choice, Config
 from strips_framework.plugin.registry import KINDS, Registry
 from strips_framework.records import Record
 from strips_framework.user_files import is_dir, is_file
@@ -103,6 +103,9 @@ class Planner(Record):
         file names even if this strategy does not use it (a ``[heuristic]`` typo is a typo
         with means-ends too), and checking that the ones used fit together."""
         config = self.config.with_registered_defaults(self.registry, ("strategy",))
+        if not self._replace(config=config)._can_search_ground_tasks_by_default():
+            choices = {**config.choices, "strategy": Choice("strategy", PDDL_LIFTED_STRATEGY)}
+            config = config._replace(choices=choices)
         tables = [config.table_of(kind) for kind in self._replace(config=config).kinds_used()]
         config = config.with_registered_defaults(self.registry, tables)
         if config is not self.config:
@@ -235,7 +238,13 @@ class Planner(Record):
         from strips_framework.lifted.task import LiftedTask
 
         estimate = estimated_operators(LiftedTask(pddl))
-        if estimate <= CHEAP_GROUNDING:
+        if not self._replace(config=self.config.for_pddl())._can_search_ground_tasks_by_default():
+            name = PDDL_LIFTED_STRATEGY
+            why = (
+                "no state heuristic is registered for the ground search (the core alone has "
+                "only lifted ones): searching without grounding"
+            )
+        elif estimate <= CHEAP_GROUNDING:
             name = PDDL_DEFAULT_STRATEGY
             why = f"grounding looks cheap (about {estimate:,.0f} operators estimated)"
         else:
@@ -248,6 +257,17 @@ class Planner(Record):
         config = self.config._replace(choices=choices)
         planner = Planner(self.registry, config, self.progress, self.observers)
         return planner.checked(), f"strategy {name}: {why}"
+
+    def _can_search_ground_tasks_by_default(self) -> bool:
+        """False when the strategy is a default ground search whose default heuristic is
+        not registered (the core alone, with plugin autoload off, has no ground heuristic
+        but lifted ones): then a default PDDL run searches lifted instead of failing."""
+        if "strategy" in self.config.chosen or "heuristic" in self.config.chosen:
+            return True
+        if not self.searches_ground_tasks:
+            return True
+        registered = self.registry.names("heuristic")
+        return any(name in registered for name in DEFAULTS["heuristic"])
 
     def solve_pddl(
         self,
