@@ -42,7 +42,15 @@ class Budget:
 
 
 def _count(solver: z3.Solver) -> int:
-    """Z3's resource counter (absent until the first check)."""
-    statistics = solver.statistics()
-    names = statistics.keys()
-    return int(statistics.get_key_value("rlimit count")) if "rlimit count" in names else 0
+    """Z3's resource counter (absent until the first check), read from the solver's
+    statistics in one pass over the C API (z3py's lookup builds every key twice)."""
+    context = solver.ctx.ref()
+    statistics = z3.Z3_solver_get_statistics(context, solver.solver)
+    z3.Z3_stats_inc_ref(context, statistics)
+    try:
+        for index in range(z3.Z3_stats_size(context, statistics)):
+            if z3.Z3_stats_get_key(context, statistics, index) == "rlimit count":
+                return int(z3.Z3_stats_get_uint_value(context, statistics, index))
+        return 0
+    finally:
+        z3.Z3_stats_dec_ref(context, statistics)
