@@ -16,6 +16,7 @@ allows, and when the candidates run out the goal follows for no θ (``Satisfiabl
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from collections.abc import Set as AbstractSet
 
 import z3
 
@@ -25,27 +26,36 @@ from strips_framework.logic.unify import unify
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.candidates import ModelTruth, surviving
-from strips_z3_prover.encoding import is_named, task_terms
+from strips_z3_prover.encoding import is_named
 from strips_z3_prover.outcome import Outcome, status_of
 from strips_z3_prover.session import PLACEHOLDER, GroundSession
 
 
 def prove_ground(
-    session: GroundSession, task: ProofTask, params: Sequence[Param], budget: Budget
+    session: GroundSession,
+    task: ProofTask,
+    params: Sequence[Param],
+    budget: Budget,
+    constants: AbstractSet[str],
 ) -> Outcome:
-    """Decide ``task`` in ``session``, whose universe already holds the task's constants."""
-    return _Attempt(session, task, params, budget).run()
+    """Decide ``task`` in ``session``, whose universe already holds the task's
+    ``constants``."""
+    return _Attempt(session, task, params, budget, constants).run()
 
 
 class _Attempt:
     """One task in a session: its selectors and the models seen so far."""
 
     def __init__(
-        self, session: GroundSession, task: ProofTask, params: Sequence[Param], budget: Budget
+        self,
+        session: GroundSession,
+        task: ProofTask,
+        params: Sequence[Param],
+        budget: Budget,
+        constants: AbstractSet[str],
     ) -> None:
         self.session, self.task, self.params, self.budget = session, task, params, budget
         self.assumptions = [session.selector(clause) for clause in task.axioms]
-        constants = {t for t in task_terms((*task.axioms, *task.negated_goal)) if type(t) is str}
         # Answers are the task's own constants, never one the session kept from another.
         self.named = sorted(c for c in constants if is_named(c))
         if task.unique_names and len(self.named) > 1:
