@@ -9,12 +9,19 @@ through the session the search opened on M0). A prover that changes no answer le
 the search the same, so the node counts must agree across provers: the table shows
 each prover's beside the milliseconds an attempt takes (the best of ``--repeat`` runs) and the
 ratio to resolution's. E's time includes its process's (``RUSAGE_CHILDREN``).
+
+``--floor`` adds what any E attempt costs before it proves anything, in the same run:
+a process started through :mod:`subprocess` (``/bin/true``), E printing its version,
+and E ``--auto`` on a one-clause problem, each split into this process's CPU time and
+the child's. A session runs E once per attempt, so no attempt of E costs less than
+the last of these.
 """
 
 from __future__ import annotations
 
 import argparse
 import resource
+import subprocess
 import sys
 import time
 from collections.abc import Sequence
@@ -103,11 +110,42 @@ def solve(task: str, prover: str) -> Measured:
     )
 
 
+def floor(runs: int = 200) -> list[tuple[str, float, float]]:
+    """(what, parent ms, child ms) per run of the commands every E attempt includes."""
+    from strips_eprover_prover.binary import find_binary
+
+    executable = find_binary()
+    commands = [("process start (/bin/true)", ["/bin/true"], "")]
+    if executable is not None:
+        trivial = "cnf(a, axiom, p).\ncnf(b, negated_conjecture, ~p).\n"
+        commands += [
+            ("E --version", [executable, "--version"], ""),
+            ("E --auto, one-clause problem", [executable, "--auto", "--silent"], trivial),
+        ]
+    rows = []
+    for what, command, text in commands:
+        own, children = time.process_time(), _cpu() - time.process_time()
+        for _ in range(runs):
+            subprocess.run(
+                command,
+                input=text,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.DEVNULL,
+                text=True,
+                check=False,
+            )
+        parent = time.process_time() - own
+        child = _cpu() - time.process_time() - children
+        rows.append((what, 1000 * parent / runs, 1000 * child / runs))
+    return rows
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--provers", nargs="+", default=["resolution", "z3", "eprover"])
     parser.add_argument("--tasks", nargs="+", default=TASKS)
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--floor", action="store_true", help="also E's per-run floor")
     args = parser.parse_args(argv)
     header = "| task |" + "".join(f" {p} nodes | attempts | ms | x |" for p in args.provers)
     print(header)
@@ -125,6 +163,10 @@ def main(argv: list[str] | None = None) -> int:
             nodes = f"{m.nodes}" + ("" if m.solved else " (unsolved)")
             row += f" {nodes} | {m.attempts} | {m.per_attempt_ms:.2f} | {ratio:.1f} |"
         print(row, flush=True)
+    if args.floor:
+        print("\n| every E run includes | parent ms | child ms |\n|---|---|---|")
+        for what, parent, child in floor():
+            print(f"| {what} | {parent:.2f} | {child:.2f} |")
     return 0
 
 

@@ -122,6 +122,23 @@ def test_uncompleted_proof_holds_the_goal_literals_not_entailed(prover: Z3Prover
     assert Clause([neg("NEXTTO", "ROBOT", "BOX1")], [(M, "BOX1")]) in result.uncompleted
 
 
+def test_a_failed_attempt_without_possible_lemmas_asks_z3_once(
+    prover: Z3Prover, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # No ABOVE atom can hold, so no lemma can exist: the refutation check is the only
+    # one (the lemma search would check the axioms again and read a model).
+    from strips_z3_prover import budget
+
+    checks = []
+    real = budget._check
+    monkeypatch.setattr(budget, "_check", lambda *args: checks.append(args) or real(*args))
+    axioms = clauses([pos("on", "a", "b")], [neg("on", 0, 1), pos("under", 1, 0)])
+    result = prover.prove(ProofTask(axioms, clauses([neg("above", "a", "b"), neg("on", "a", "b")])))
+    assert result.status == SATURATED
+    assert len(checks) == 1
+    assert result.uncompleted == (Clause([neg("above", "a", "b")]),)
+
+
 def test_the_uncompleted_proof_leaves_out_subsumed_clauses(prover: Z3Prover) -> None:
     # ONFLOOR is a fact: a clause that still holds ~ONFLOOR beside ~LOCINROOM(f, R1) adds
     # nothing to ~LOCINROOM(f, R1), and would make ONFLOOR look like something to achieve.

@@ -27,6 +27,9 @@ from strips_framework.worldmodel.proving import ProofTask
 
 #: Clauses made at most: the uncompleted proof of a big model stays small and quick.
 LIMIT = 120
+#: A clause a goal clause may resolve with: its index, the clause, the literal's
+#: position, its literals renamed apart.
+_Partner = tuple[int, Clause, int, tuple[Literal, ...]]
 #: Added to the model clause's variables to rename it apart from the goal clause's.
 _OFFSET = 1 << 16
 
@@ -49,12 +52,33 @@ def _renumber(term: Term, numbering: dict[int, int]) -> Term:
     return term
 
 
-def _resolvent(clause: Clause, i: int, partner: Clause, j: int) -> Clause | None:
+def _shifted(clause: Clause) -> tuple[Literal, ...]:
+    """``clause``'s literals renamed apart from a goal clause's (made once per clause)."""
+    return tuple((sign, _shift(atom)) for sign, atom in clause.literals)
+
+
+def _clash(atom: tuple, other: tuple) -> bool:
+    """Whether two atoms cannot unify for a reason seen without a unifier: different
+    arities or two different constants in one place (most pairs in a world model)."""
+    if len(atom) != len(other):
+        return True
+    for a, b in zip(atom, other):
+        if a != b and type(a) is str and type(b) is str:
+            return True
+    return False
+
+
+def _resolvent(
+    clause: Clause, i: int, partner: Clause, j: int, theirs: tuple[Literal, ...]
+) -> Clause | None:
+    """The resolvent on ``clause``'s literal ``i`` and ``partner``'s ``j``; ``theirs`` is
+    :func:`_shifted` of ``partner``."""
+    if _clash(clause.literals[i][1], theirs[j][1]):
+        return None
     subst: dict = dict(clause.bindings)
     for param, value in partner.bindings:
         if unify(param, value, subst) is None:
             return None
-    theirs = [(sign, _shift(atom)) for sign, atom in partner.literals]
     if unify(clause.literals[i][1], theirs[j][1], subst) is None:
         return None
     rest = [*clause.literals[:i], *clause.literals[i + 1 :], *theirs[:j], *theirs[j + 1 :]]
@@ -96,19 +120,19 @@ class Residue:
     so an attempt walks only the partners of its own clauses, not the model."""
 
     def __init__(self, axioms: tuple[Clause, ...]) -> None:
-        #: (sign, predicate) -> (the axiom's index, the axiom, the literal's position)
-        self.by_key: dict[tuple[bool, str], list[tuple[int, Clause, int]]] = {}
+        #: (sign, predicate) -> (the axiom's index, the axiom, the literal's position,
+        #: the axiom's literals renamed apart)
+        self.by_key: dict[tuple[bool, str], list[_Partner]] = {}
         self._add(axioms, 0, self.by_key)
 
     @staticmethod
     def _add(
-        axioms: tuple[Clause, ...],
-        first: int,
-        by_key: dict[tuple[bool, str], list[tuple[int, Clause, int]]],
+        axioms: tuple[Clause, ...], first: int, by_key: dict[tuple[bool, str], list[_Partner]]
     ) -> None:
         for number, axiom in enumerate(axioms, first):
+            shifted = _shifted(axiom)
             for j, (sign, atom) in enumerate(axiom.literals):
-                by_key.setdefault((sign, atom[0]), []).append((number, axiom, j))
+                by_key.setdefault((sign, atom[0]), []).append((number, axiom, j, shifted))
 
     def of(
         self,
@@ -119,7 +143,7 @@ class Residue:
         """The uncompleted proof of ``negated_goal`` over the indexed axioms less those
         numbered in ``hidden``, plus ``added`` after them (see the module docstring), in
         the order made: exactly what :func:`residue` gives the task of those axioms."""
-        extra: dict[tuple[bool, str], list[tuple[int, Clause, int]]] = {}
+        extra: dict[tuple[bool, str], list[_Partner]] = {}
         self._add(added, -len(added) - 1, extra)  # numbers no M0 clause has
         found = list(dict.fromkeys(negated_goal))
         known = set(found)
@@ -129,12 +153,14 @@ class Residue:
             clause = heapq.heappop(waiting)[2]
             for i, (sign, atom) in enumerate(clause.literals):
                 key = (not sign, atom[0])
-                for number, partner, j in chain(self.by_key.get(key, ()), extra.get(key, ())):
+                for number, partner, j, theirs in chain(
+                    self.by_key.get(key, ()), extra.get(key, ())
+                ):
                     if len(found) >= LIMIT:
                         break
                     if number in hidden:
                         continue
-                    made = _resolvent(clause, i, partner, j)
+                    made = _resolvent(clause, i, partner, j, theirs)
                     if made is not None and made not in known:
                         known.add(made)
                         found.append(made)

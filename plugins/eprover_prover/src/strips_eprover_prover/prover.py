@@ -109,11 +109,14 @@ class EProver(Configurable):
         table: SymbolTable,
         task: ProofTask,
         uncompleted: Callable[[], tuple[Clause, ...]],
+        executable: str | None = None,
     ) -> ProofResult:
-        """E on the TPTP ``text`` of ``task``; ``uncompleted`` makes the residue."""
-        executable = find_binary(self.binary)
+        """E on the TPTP ``text`` of ``task``; ``uncompleted`` makes the residue.
+        ``executable`` is E's path when the caller has looked it up already."""
+        executable = executable or find_binary(self.binary)
         if executable is None:
             raise PluginError(missing_binary_message(self.binary))
+        # Only stdout is read: E's stderr goes nowhere rather than through a third pipe.
         run = subprocess.run(
             [
                 executable,
@@ -125,7 +128,8 @@ class EProver(Configurable):
                 f"--cpu-limit={self.cpu_limit}",
             ],
             input=text,
-            capture_output=True,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
             text=True,
             check=False,
         )
@@ -164,6 +168,8 @@ class EProverSession:
             raise ValueError("an axiom has parameters: only the goal may have them")
         self.equality = self.table.equality
         self.residue = Residue(initial.clauses)
+        # Looked up once: finding it on PATH costs a dozen stat calls per attempt.
+        self.executable = find_binary(prover.binary)
 
     def prove(
         self,
@@ -184,7 +190,9 @@ class EProverSession:
             f"cnf(b{n}, axiom, {disjunction(clause, table)})." for n, clause in enumerate(added)
         )
         text = "\n".join([*lines, *goal_lines(goal, table)]) + "\n"
-        return self.prover._run(text, table, task, lambda: self.residue.of(goal, hidden, added))
+        return self.prover._run(
+            text, table, task, lambda: self.residue.of(goal, hidden, added), self.executable
+        )
 
 
 def _answers(status: str, lines: list[str], table: SymbolTable) -> tuple[Answer, ...]:

@@ -48,24 +48,40 @@ class ModelTruth:
         hold, where Z3 is free to make the atoms no asserted instance names true."""
         self.model = model
         self.vocabulary = vocabulary
+        self._universe = tuple(universe)  # the session's grows; this model does not
         # Elements are compared by AST id, which Z3 reuses once an AST is freed: the
         # values stay referenced here for as long as the ids are used.
-        self._values = [model.eval(vocabulary.constant(name), True) for name in universe]
-        self.value = {name: value.get_id() for name, value in zip(universe, self._values)}
-        self.elements = self._z3_elements = sorted(set(self.value.values()))
-        self._representative: dict[Element, z3.ExprRef] = {}
-        for name in universe:
-            self._representative.setdefault(self.value[name], vocabulary.constant(name))
+        self._values: list = []
+        self._z3_value = _Values(model, vocabulary, self._values)
         self._relevance = relevance if relevance is not None and not relevance.everything else None
-        self._z3_value = self.value
         if self._relevance is not None:
+            # Read over the constants: no constant's value is needed before a table is.
             self.value = {name: i for i, name in enumerate(universe)}
             self.elements = list(range(len(universe)))
+        else:
+            self.value = {name: self._z3_value[name] for name in universe}
+            self.elements = sorted(set(self.value.values()))
         self.names: dict[Element, list[str]] = {}
         for name in answers:
             self.names.setdefault(self.value[name], []).append(name)
         self._tables: dict[tuple[str, int], Table] = {}
-        self._interpreted = {declaration.name() for declaration in model.decls()}
+        self._representatives: dict[Element, z3.ExprRef] | None = None
+
+    @property
+    def _representative(self) -> dict[Element, z3.ExprRef]:
+        """A constant for each element of the universe (evaluated once, when a table
+        must be read element by element)."""
+        if self._representatives is None:
+            self._representatives = {}
+            for name in self._universe:
+                self._representatives.setdefault(
+                    self._z3_value[name], self.vocabulary.constant(name)
+                )
+        return self._representatives
+
+    @property
+    def _z3_elements(self) -> list[Element]:
+        return sorted(self._representative)
 
     def table(self, predicate: str, arity: int) -> Table:
         key = (predicate, arity)
@@ -90,8 +106,9 @@ class ModelTruth:
         symbol = self.vocabulary.predicate(predicate, arity)
         if arity == 0:
             return frozenset({()}) if z3.is_true(self.model.eval(symbol, True)) else frozenset()
-        if symbol.name() not in self._interpreted:  # unconstrained: false in the completion
-            return frozenset()
+        model = self.model
+        if not z3.Z3_model_has_interp(model.ctx.ref(), model.model, symbol.ast):
+            return frozenset()  # unconstrained: false in the completion
         entries = self.model[symbol].as_list()
         self._values.append(entries)
         default = entries[-1]
@@ -220,6 +237,21 @@ def _match(truth: ModelTruth, term: Term, element: Element, binding: dict[Term, 
 
 def _value(truth: ModelTruth, term: Term, binding: dict[Term, Element]) -> Element:
     return truth.value[term] if type(term) is str else binding[term]
+
+
+class _Values(dict):
+    """The element id of each constant, evaluated in the model on first use: a model
+    of a big universe is read only at the constants a table or a goal names."""
+
+    def __init__(self, model: z3.ModelRef, vocabulary: Vocabulary, keep: list) -> None:
+        super().__init__()
+        self._model, self._vocabulary, self._keep = model, vocabulary, keep
+
+    def __missing__(self, name: str) -> Element:
+        value = self._model.eval(self._vocabulary.constant(name), True)
+        self._keep.append(value)
+        found = self[name] = value.get_id()
+        return found
 
 
 def _is_value(expression: z3.ExprRef) -> bool:

@@ -20,7 +20,6 @@ import z3
 
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.terms import EQUALITY, SKOLEM_PREFIX, Param, Term, subterms
-from strips_framework.worldmodel.proving import ProofTask
 
 #: A variable or parameter replaced by a term (ground) or a Z3 bound constant (quantified).
 Binding = Mapping[int | Param, Term]
@@ -118,10 +117,25 @@ def task_terms(clauses: Iterable[Clause]) -> Iterator[Term]:
             yield from _atom_terms(atom)
 
 
-def has_functions(task: ProofTask) -> bool:
-    """Whether a function symbol (Skolem functions included) occurs: then the Herbrand
-    universe is infinite and grounding over the constants is no longer complete."""
-    return any(type(t) is tuple for t in task_terms((*task.axioms, *task.negated_goal)))
+class ClauseTerms:
+    """What an attempt asks of each clause's terms (function symbols, parameters, the
+    constants), worked out once per distinct clause: a session's attempts see M0's
+    clauses again and again, and walking their terms was a tenth of an attempt."""
+
+    def __init__(self) -> None:
+        self._known: dict[Clause, tuple[bool, bool, frozenset[str]]] = {}
+
+    def of(self, clause: Clause) -> tuple[bool, bool, frozenset[str]]:
+        """Whether ``clause`` has a function symbol, a parameter; its constants."""
+        found = self._known.get(clause)
+        if found is None:
+            terms = list(task_terms((clause,)))
+            found = self._known[clause] = (
+                any(type(t) is tuple for t in terms),
+                any(type(t) is Param for t in terms),
+                frozenset(t for t in terms if type(t) is str),
+            )
+        return found
 
 
 def is_named(term: Term) -> bool:

@@ -15,7 +15,8 @@ allows, and when the candidates run out the goal follows for no θ (``Satisfiabl
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from collections.abc import Set as AbstractSet
 
 import z3
 
@@ -25,27 +26,36 @@ from strips_framework.logic.unify import unify
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Answer, ProofTask
 from strips_z3_prover.budget import Budget
 from strips_z3_prover.candidates import ModelTruth, surviving
-from strips_z3_prover.encoding import is_named, task_terms
+from strips_z3_prover.encoding import is_named
 from strips_z3_prover.outcome import Outcome, status_of
 from strips_z3_prover.session import PLACEHOLDER, GroundSession
 
 
 def prove_ground(
-    session: GroundSession, task: ProofTask, params: Sequence[Param], budget: Budget
+    session: GroundSession,
+    task: ProofTask,
+    params: Sequence[Param],
+    budget: Budget,
+    constants: AbstractSet[str],
 ) -> Outcome:
-    """Decide ``task`` in ``session``, whose universe already holds the task's constants."""
-    return _Attempt(session, task, params, budget).run()
+    """Decide ``task`` in ``session``, whose universe already holds the task's
+    ``constants``."""
+    return _Attempt(session, task, params, budget, constants).run()
 
 
 class _Attempt:
     """One task in a session: its selectors and the models seen so far."""
 
     def __init__(
-        self, session: GroundSession, task: ProofTask, params: Sequence[Param], budget: Budget
+        self,
+        session: GroundSession,
+        task: ProofTask,
+        params: Sequence[Param],
+        budget: Budget,
+        constants: AbstractSet[str],
     ) -> None:
         self.session, self.task, self.params, self.budget = session, task, params, budget
         self.assumptions = [session.selector(clause) for clause in task.axioms]
-        constants = {t for t in task_terms((*task.axioms, *task.negated_goal)) if type(t) is str}
         # Answers are the task's own constants, never one the session kept from another.
         self.named = sorted(c for c in constants if is_named(c))
         if task.unique_names and len(self.named) > 1:
@@ -70,7 +80,7 @@ class _Attempt:
             if values not in candidates:
                 continue  # rejected by a countermodel of an earlier candidate
             binding = dict(zip(self.params, values))
-            result, model = self._refute(self.task.negated_goal, binding)
+            result, model = self._refute(self.task.negated_goal, binding, countermodel=True)
             if result == z3.unsat:
                 answers.append(tuple(binding.items()))
             elif model is not None:
@@ -103,10 +113,6 @@ class _Attempt:
         assumed false all at once: if that is consistent none is entailed; if not, an
         unsatisfiable core of a single assumption shows its atom entailed, which is
         recorded and dropped before checking again (a larger core ends the search)."""
-        if self.first is None:
-            if self.budget.check(self.session.solver, self.assumptions) != z3.sat:
-                return ()
-            self.first = self._truth(self.session.solver.model())
         facts = {c.literals[0][1] for c in self.task.axioms if c.is_unit and c.literals[0][0]}
         goal_atoms = [
             atom
@@ -115,14 +121,22 @@ class _Attempt:
             if not positive and atom[0] != EQUALITY
         ]
         predicates = sorted({(atom[0], len(atom) - 1) for atom in goal_atoms})
-        candidates = [
-            atom
-            for atom in self.first.true_atoms(predicates)
+
+        def admissible(atom: tuple) -> bool:
             # An atom that cannot hold (relevance) is true only by the model's whim.
-            if atom not in facts
-            and self.session.relevance.possible(atom)
-            and any(unify(goal, atom, {}) is not None for goal in goal_atoms)
-        ]
+            return (
+                atom not in facts
+                and self.session.relevance.possible(atom)
+                and any(unify(goal, atom, {}) is not None for goal in goal_atoms)
+            )
+
+        if not self._may_have_lemmas(predicates, admissible):
+            return ()
+        if self.first is None:
+            if self.budget.check(self.session.solver, self.assumptions) != z3.sat:
+                return ()
+            self.first = self._truth(self.session.solver.model())
+        candidates = [atom for atom in self.first.true_atoms(predicates) if admissible(atom)]
         batch = self.session.batch()
         for i, atom in enumerate(candidates):
             batch.assert_clause(Clause([(False, atom)]), {}, f"lemma!{i}")
@@ -144,6 +158,23 @@ class _Attempt:
         self.session.solver.pop()
         return tuple(lemmas)
 
+    def _may_have_lemmas(
+        self, predicates: Sequence[tuple[str, int]], admissible: Callable[[tuple], bool]
+    ) -> bool:
+        """Whether a lemma candidate may exist: one is an admissible atom over the task's
+        named constants that a model of the axioms makes true, so with relevance it is
+        among the atoms that can hold, which are known without asking Z3 for a model
+        (most failed attempts have none, and then need no check)."""
+        relevance = self.session.relevance
+        if relevance.everything:
+            return True
+        named = set(self.named)
+        return any(
+            all(name in named for name in row) and admissible((predicate, *row))
+            for predicate, arity in predicates
+            for row in relevance.atoms.get((predicate, arity), ())
+        )
+
     def _truth(self, model: z3.ModelRef) -> ModelTruth:
         session = self.session
         return ModelTruth(
@@ -151,10 +182,11 @@ class _Attempt:
         )
 
     def _refute(
-        self, clauses: Sequence[Clause], binding: dict[Param, str]
+        self, clauses: Sequence[Clause], binding: dict[Param, str], countermodel: bool = False
     ) -> tuple[z3.CheckSatResult, z3.ModelRef | None]:
-        """Check the axioms with the instances of ``clauses`` under ``binding``; the
-        countermodel when there is one."""
+        """Check the axioms with the instances of ``clauses`` under ``binding``; with
+        ``countermodel``, the countermodel when there is one (Z3 builds a model only
+        when asked, at a cost like the check's on a small world)."""
         session, solver = self.session, self.session.solver
         session.expect(clauses, binding)
         batch = session.batch()
@@ -163,6 +195,6 @@ class _Attempt:
         solver.push()
         session.add(batch)
         result = self.budget.check(solver, self.assumptions)
-        model = solver.model() if result == z3.sat else None
+        model = solver.model() if countermodel and result == z3.sat else None
         solver.pop()
         return result, model

@@ -26,7 +26,7 @@ from strips_framework.options import Configurable, Option
 from strips_framework.worldmodel.proving import PROVED, ProofResult, ProofTask
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 from strips_z3_prover.budget import Budget
-from strips_z3_prover.encoding import clause_params, has_functions, task_terms
+from strips_z3_prover.encoding import ClauseTerms, clause_params
 from strips_z3_prover.ground import prove_ground
 from strips_z3_prover.outcome import Outcome
 from strips_z3_prover.quantified import prove_quantified
@@ -92,6 +92,7 @@ class Z3Session:
         self.options = options
         self.unique_names = unique_names
         self.ground = GroundSession(options.seed) if options.incremental else None
+        self.terms = ClauseTerms()
 
     def prove(
         self,
@@ -115,14 +116,17 @@ class Z3Session:
         )
 
     def _attempt(self, task: ProofTask, params: list, budget: Budget) -> Outcome:
-        clauses = (*task.axioms, *task.negated_goal)
+        axioms = [self.terms.of(c) for c in task.axioms]
+        goal = [self.terms.of(c) for c in task.negated_goal]
         seed = self.options.seed
-        if has_functions(task) or any(clause_params(c) for c in task.axioms):
+        # A function symbol (Skolem functions included) makes the Herbrand universe
+        # infinite, and grounding over the constants incomplete.
+        if any(functions for functions, _, _ in (*axioms, *goal)) or any(p for _, p, _ in axioms):
             return prove_quantified(task, params, budget, seed)
-        constants = {t for t in task_terms(clauses) if type(t) is str} or {PLACEHOLDER}
+        constants = set().union(*(names for _, _, names in (*axioms, *goal))) or {PLACEHOLDER}
         session = self.ground if self.ground is not None else GroundSession(seed)
-        needed = session.instances_needed(clauses, constants)
+        needed = session.instances_needed((*task.axioms, *task.negated_goal), constants)
         if needed > self.options.max_ground_instances:
             return prove_quantified(task, params, budget, seed)
         session.admit(constants)
-        return prove_ground(session, task, params, budget)
+        return prove_ground(session, task, params, budget, constants)

@@ -85,10 +85,11 @@ class GroundSession:
         key = tuple(sorted(names))
         found = self._distinct.get(key)
         if found is None:
-            found = z3.Bool(f"distinct!{len(self._distinct)}", self.vocabulary.context)
-            constants = [self.vocabulary.constant(name) for name in key]
-            self.solver.add(z3.Implies(found, z3.Distinct(constants)))
-            self._distinct[key] = found
+            name = f"distinct!{len(self._distinct)}"
+            batch = self.batch()
+            batch.assert_distinct(key, name)
+            self.add(batch)
+            found = self._distinct[key] = z3.Bool(name, self.vocabulary.context)
         return found
 
     def selector(self, clause: Clause) -> z3.BoolRef:

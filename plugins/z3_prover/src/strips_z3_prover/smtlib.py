@@ -11,7 +11,7 @@ are read back through the Python objects.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import EQUALITY, Param, Term
@@ -46,6 +46,12 @@ class Batch:
             self._declare(selector, f"(declare-const |{selector}| Bool)")
             body = f"(=> |{selector}| {body})"
         self._assertions.append(f"(assert {body})")
+
+    def assert_distinct(self, names: Sequence[str], selector: str) -> None:
+        """Assert ``selector -> names are pairwise distinct`` (unique names)."""
+        self._declare(selector, f"(declare-const |{selector}| Bool)")
+        constants = " ".join(self._constant(name) for name in names)
+        self._assertions.append(f"(assert (=> |{selector}| (distinct {constants})))")
 
     def declarations(self) -> str:
         """The declarations not made before; from now on they count as made."""
