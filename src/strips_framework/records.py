@@ -26,13 +26,14 @@ class Record:
     """Equality, hash, ``repr`` and ``_replace`` from the fields the constructor takes."""
 
     __slots__ = ()
-    #: The constructor's parameters, in order; ``__slots__`` unless the class says otherwise.
+    #: The constructor's parameters, in order; ``__slots__`` unless the class says otherwise
+    #: (a subclass that adds no slots keeps its base's, as ``And`` and ``Or`` share theirs).
     FIELDS: ClassVar[tuple[str, ...]] = ()
 
     def __init_subclass__(cls) -> None:
         super().__init_subclass__()
         if "FIELDS" not in cls.__dict__:
-            cls.FIELDS = tuple(cls.__dict__.get("__slots__", ()))
+            cls.FIELDS = tuple(cls.__dict__.get("__slots__", ())) or cls.FIELDS
 
     def _values(self) -> tuple[object, ...]:
         return tuple([getattr(self, name) for name in self.FIELDS])
