@@ -38,3 +38,12 @@ def test_a_subclass_adding_no_slots_keeps_its_bases_fields():
     assert WffAnd.FIELDS == WffOr.FIELDS == ("parts",)
     assert WffAnd(parts) != WffAnd(()) and WffAnd(parts) != WffOr(parts)
     assert repr(WffAnd(parts)) == "And(parts=(Truth(value=True),))"
+
+
+def test_fields_left_out_of_compared_are_kept_by_repr_and_replace_but_not_compared():
+    from strips_framework.logic.clauses import Clause
+
+    labelled = Clause([(True, ("P",))], label="fact")
+    assert labelled == Clause([(True, ("P",))]) and hash(labelled) == hash(Clause([(True, ("P",))]))
+    assert labelled._replace(literals=[(True, ("Q",))]).label == "fact"
+    assert "label='fact'" in repr(labelled)

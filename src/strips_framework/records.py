@@ -9,7 +9,10 @@ measurable part of the whole run (``benchmarks/startup_vs_pyperplan.py``). A sub
 lists its fields in ``__slots__`` (or, when it also keeps values computed from them, in
 ``FIELDS``) and assigns them in ``__init__``; :class:`Record` gives it equality and
 hashing by type and fields (so two record types with the same fields never compare
-equal), a ``repr`` and ``_replace``. Records are not changed after they are built.
+equal), a ``repr`` and ``_replace``. A field that says where a value came from (a source
+line, a label) but not what it is stays out of ``COMPARED``, the fields equality and the
+hash look at (``FIELDS`` unless the class says otherwise); ``repr`` and ``_replace`` keep
+it. Records are not changed after they are built.
 """
 
 from __future__ import annotations
@@ -29,14 +32,19 @@ class Record:
     #: The constructor's parameters, in order; ``__slots__`` unless the class says otherwise
     #: (a subclass that adds no slots keeps its base's, as ``And`` and ``Or`` share theirs).
     FIELDS: ClassVar[tuple[str, ...]] = ()
+    #: The fields equality and the hash compare; ``FIELDS`` unless the class says otherwise.
+    COMPARED: ClassVar[tuple[str, ...]] = ()
 
     def __init_subclass__(cls) -> None:
         super().__init_subclass__()
+        declares = "FIELDS" in cls.__dict__ or bool(cls.__dict__.get("__slots__"))
         if "FIELDS" not in cls.__dict__:
             cls.FIELDS = tuple(cls.__dict__.get("__slots__", ())) or cls.FIELDS
+        if "COMPARED" not in cls.__dict__ and declares:
+            cls.COMPARED = cls.FIELDS
 
     def _values(self) -> tuple[object, ...]:
-        return tuple([getattr(self, name) for name in self.FIELDS])
+        return tuple([getattr(self, name) for name in self.COMPARED])
 
     def __eq__(self, other: object) -> bool:
         return type(other) is type(self) and other._values() == self._values()  # type: ignore[attr-defined]
@@ -53,5 +61,5 @@ class Record:
 
     def _replace(self: _R, **changes: object) -> _R:
         """A copy with ``changes`` (fields by name), as a NamedTuple's ``_replace``."""
-        values = dict(zip(self.FIELDS, self._values(), strict=True))
+        values = {name: getattr(self, name) for name in self.FIELDS}
         return type(self)(**{**values, **changes})
