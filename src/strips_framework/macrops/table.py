@@ -16,7 +16,7 @@ later steps need).
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 
 from strips_framework.logic.terms import Atom, Param, Term, term_to_str
 from strips_framework.logic.unify import substitute
