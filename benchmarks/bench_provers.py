@@ -104,7 +104,7 @@ def recorded_attempts(name: str) -> Recording:
     same, larger one.)"""
     planner = Planner.create(Config.from_dict({"limits": {"time": 60}}))
     problem = planner.load(EXAMPLES / f"{name}.strips")
-    original = GoalProver.__attrs_post_init__
+    original = GoalProver._open
     recordings: list[Recording] = []
 
     def record(self: GoalProver) -> None:
@@ -113,11 +113,11 @@ def recorded_attempts(name: str) -> Recording:
         recordings.append(recording)
         self.session = _RecordingSession(self.session, recording)
 
-    GoalProver.__attrs_post_init__ = record
+    GoalProver._open = record
     try:
         assert planner.solve(problem).solved
     finally:
-        GoalProver.__attrs_post_init__ = original
+        GoalProver._open = original
     return recordings[0]
 
 

@@ -82,7 +82,7 @@ def solve(task: str, prover: str) -> Measured:
     config = Config.from_dict({"prover": {"name": prover}, "limits": {"time": 3600}})
     planner = Planner.create(config)
     problem = planner.load(EXAMPLES / f"{task}.strips")
-    original = GoalProver.__attrs_post_init__
+    original = GoalProver._open
     sessions: list[_Timed] = []
 
     def timed(self: GoalProver) -> None:
@@ -90,11 +90,11 @@ def solve(task: str, prover: str) -> Measured:
         self.session = _Timed(self.session)
         sessions.append(self.session)
 
-    GoalProver.__attrs_post_init__ = timed
+    GoalProver._open = timed
     try:
         result = planner.solve(problem)
     finally:
-        GoalProver.__attrs_post_init__ = original
+        GoalProver._open = original
     return Measured(
         result.statistics.nodes,
         sum(s.attempts for s in sessions),
