@@ -21,8 +21,6 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TypeVar
 
-from attrs import frozen
-
 from strips_framework.capabilities import ANSWER_LITERALS, declared
 from strips_framework.errors import InputError
 from strips_framework.logic.clauses import Clause
@@ -42,6 +40,7 @@ from strips_framework.logic.formulas import (
     substitute_free,
 )
 from strips_framework.logic.terms import ANSWER, EQUALITY, SKOLEM_PREFIX, Param, Term
+from strips_framework.records import Record
 from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
@@ -80,12 +79,19 @@ class Inappropriate(InputError):
     opposed to a syntax error: a defined symbol such as ``$sum``."""
 
 
-@frozen
-class _Token:
+class _Token(Record):
     kind: str  # "word", "var", "dollar", "quoted", "distinct", "number", "op", "end"
     text: str
     line: int
     column: int
+
+    __slots__ = ("kind", "text", "line", "column")
+
+    def __init__(self, kind: str, text: str, line: int, column: int) -> None:
+        self.kind = kind
+        self.text = text
+        self.line = line
+        self.column = column
 
 
 def _tokenize(text: str, path: str) -> list[_Token]:
@@ -109,8 +115,7 @@ def _tokenize(text: str, path: str) -> list[_Token]:
     return tokens
 
 
-@frozen
-class TptpFormula:
+class TptpFormula(Record):
     """One annotated formula: ``language(name, role, formula)``."""
 
     name: str
@@ -118,6 +123,15 @@ class TptpFormula:
     language: str  # "cnf" or "fof"
     formula: Formula
     line: int
+
+    __slots__ = ("name", "role", "language", "formula", "line")
+
+    def __init__(self, name: str, role: str, language: str, formula: Formula, line: int) -> None:
+        self.name = name
+        self.role = role
+        self.language = language
+        self.formula = formula
+        self.line = line
 
 
 class _Parser:
@@ -406,8 +420,7 @@ def _close(formula: Formula) -> Formula:
 # -- problems ------------------------------------------------------------------------------
 
 
-@frozen
-class TptpProblem:
+class TptpProblem(Record):
     """A parsed TPTP file."""
 
     path: str
@@ -416,7 +429,19 @@ class TptpProblem:
     #: them as themselves, so two different ones are unequal: :meth:`task` adds that as
     #: axioms, since without them saturation could claim Satisfiable of ``"a" = "b"``.
     #: (Arithmetic on numbers, ``$sum`` and the like, is refused when read.)
-    distinct_objects: tuple[str, ...] = ()
+    distinct_objects: tuple[str, ...]
+
+    __slots__ = ("path", "formulas", "distinct_objects")
+
+    def __init__(
+        self,
+        path: str,
+        formulas: tuple[TptpFormula, ...],
+        distinct_objects: tuple[str, ...] = (),
+    ) -> None:
+        self.path = path
+        self.formulas = formulas
+        self.distinct_objects = distinct_objects
 
     @property
     def name(self) -> str:
@@ -539,15 +564,26 @@ def szs_status(problem: TptpProblem, result: ProofResult) -> str:
 ANSWER_SEARCH_FACTOR = 8
 
 
-@frozen
-class TptpOutcome:
+class TptpOutcome(Record):
     """What :func:`prove_tptp` found: the SZS status, the answer tuples (``None`` when
     there are none) and each proof attempt made, named (``problem``, ``question`` with
     answer literals, or ``conjecture`` then ``answer search`` with parameters)."""
 
     status: str
-    answers: str | None = None
-    attempts: tuple[tuple[str, ProofResult], ...] = ()
+    answers: str | None
+    attempts: tuple[tuple[str, ProofResult], ...]
+
+    __slots__ = ("status", "answers", "attempts")
+
+    def __init__(
+        self,
+        status: str,
+        answers: str | None = None,
+        attempts: tuple[tuple[str, ProofResult], ...] = (),
+    ) -> None:
+        self.status = status
+        self.answers = answers
+        self.attempts = attempts
 
     @property
     def effort_used(self) -> int:
