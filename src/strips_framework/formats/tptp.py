@@ -39,6 +39,7 @@ from strips_framework.logic.formulas import (
     Var,
     substitute_free,
 )
+from strips_framework.logic.parser import Token
 from strips_framework.logic.terms import ANSWER, EQUALITY, SKOLEM_PREFIX, Param, Term
 from strips_framework.records import Record
 from strips_framework.user_files import MAX_NESTING, read_text
@@ -79,23 +80,10 @@ class Inappropriate(InputError):
     opposed to a syntax error: a defined symbol such as ``$sum``."""
 
 
-class _Token(Record):
-    kind: str  # "word", "var", "dollar", "quoted", "distinct", "number", "op", "end"
-    text: str
-    line: int
-    column: int
-
-    __slots__ = ("kind", "text", "line", "column")
-
-    def __init__(self, kind: str, text: str, line: int, column: int) -> None:
-        self.kind = kind
-        self.text = text
-        self.line = line
-        self.column = column
-
-
-def _tokenize(text: str, path: str) -> list[_Token]:
-    tokens: list[_Token] = []
+def _tokenize(text: str, path: str) -> list[Token]:
+    """The tokens of a TPTP text, of kinds "word", "var", "dollar", "quoted", "distinct",
+    "number" and "op", then one of kind "end"."""
+    tokens: list[Token] = []
     pos, line, line_start = 0, 1, 0
     while pos < len(text):
         found = _TOKEN.match(text, pos)
@@ -105,13 +93,13 @@ def _tokenize(text: str, path: str) -> list[_Token]:
             )
         kind = found.lastgroup or ""
         if kind != "space":
-            tokens.append(_Token(kind, found.group(), line, pos - line_start + 1))
+            tokens.append(Token(kind, found.group(), line, pos - line_start + 1))
         newlines = found.group().count("\n")
         if newlines:
             line += newlines
             line_start = found.start() + found.group().rfind("\n") + 1
         pos = found.end()
-    tokens.append(_Token("end", "", line, pos - line_start + 1))
+    tokens.append(Token("end", "", line, pos - line_start + 1))
     return tokens
 
 
@@ -147,22 +135,22 @@ class _Parser:
 
     # -- token helpers --------------------------------------------------------------------
 
-    def peek(self) -> _Token:
+    def peek(self) -> Token:
         return self.tokens[self.pos]
 
-    def next(self) -> _Token:
+    def next(self) -> Token:
         token = self.tokens[self.pos]
         self.pos += 1
         return token
 
-    def error(self, expected: str, token: _Token | None = None) -> InputError:
+    def error(self, expected: str, token: Token | None = None) -> InputError:
         token = token or self.peek()
         found = repr(token.text) if token.kind != "end" else "end of file"
         return InputError(
             self.path, token.line, token.column, f"expected {expected}, found {found}"
         )
 
-    def uninterpreted(self, token: _Token) -> Inappropriate:
+    def uninterpreted(self, token: Token) -> Inappropriate:
         """A defined (``$sum``, ``$less``, ``$int``) or system (``$$...``) symbol: it has
         a meaning (arithmetic, types) that the provers do not interpret, and reading it as
         an uninterpreted symbol would make saturation claim Satisfiable of a problem
@@ -175,7 +163,7 @@ class _Parser:
             "interpreted; arithmetic and types are not)",
         )
 
-    def expect(self, text: str) -> _Token:
+    def expect(self, text: str) -> Token:
         token = self.peek()
         if token.kind != "op" or token.text != text:
             raise self.error(f"'{text}'")
@@ -212,7 +200,7 @@ class _Parser:
             formulas.append(self.annotated(token))
         return formulas
 
-    def annotated(self, start: _Token) -> TptpFormula:
+    def annotated(self, start: Token) -> TptpFormula:
         self.expect("(")
         name = self.name("a formula name")
         self.expect(",")
