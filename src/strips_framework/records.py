@@ -1,13 +1,18 @@
 """Records: immutable values as plain classes with ``__slots__``.
 
-The PDDL solve path builds its records (formulas, the lifted and the ground task, the
-result, the config) with this base rather than attrs or :class:`typing.NamedTuple`: an
-attrs class compiles its generated methods when it is built, and a NamedTuple evaluates
-its annotations and compiles its constructor, at every start-up; a slotted class with a
+Every value of the core and of the plugins here (formulas, clauses, world models, tasks,
+results, the config) is a record, rather than an attrs class, a dataclass or a
+:class:`typing.NamedTuple` (``tests/test_value_declarations.py`` checks it): an attrs
+class compiles its generated methods when it is built, and a NamedTuple evaluates its
+annotations and compiles its constructor, at every start-up; a slotted class with a
 written-out ``__init__`` is built about twenty times faster, which on a small task is a
-measurable part of the whole run (``benchmarks/startup_vs_pyperplan.py``). A subclass
-lists its fields in ``__slots__`` (or, when it also keeps values computed from them, in
-``FIELDS``) and assigns them in ``__init__``; :class:`Record` gives it equality and
+measurable part of the whole run (``benchmarks/startup_declarations.py``,
+``benchmarks/startup_vs_pyperplan.py``). Converters and checks are written in
+``__init__``; state that changes (counters, caches, a search's nodes) lives in plain
+classes with ``__slots__``, not in records.
+
+A subclass lists its fields in ``__slots__`` (or, when it also keeps values computed from
+them, in ``FIELDS``) and assigns them in ``__init__``; :class:`Record` gives it equality and
 hashing by type and fields (so two record types with the same fields never compare
 equal), a ``repr`` and ``_replace``. A field that says where a value came from (a source
 line, a label) but not what it is stays out of ``COMPARED``, the fields equality and the
