@@ -41,9 +41,12 @@ def test_a_subclass_adding_no_slots_keeps_its_bases_fields():
 
 
 def test_fields_left_out_of_compared_are_kept_by_repr_and_replace_but_not_compared():
-    from strips_framework.logic.clauses import Clause
+    from strips_framework.worldmodel.problem import DerivedFact, SourceSpan
 
-    labelled = Clause([(True, ("P",))], label="fact")
-    assert labelled == Clause([(True, ("P",))]) and hash(labelled) == hash(Clause([(True, ("P",))]))
-    assert labelled._replace(literals=[(True, ("Q",))]).label == "fact"
-    assert "label='fact'" in repr(labelled)
+    here, there = SourceSpan("a.strips", 3), SourceSpan("b.strips", 9)
+    fact = DerivedFact(("P", "a"), [("Q", "a")], here)
+    assert fact == DerivedFact(("P", "a"), [("Q", "a")], there)
+    assert hash(fact) == hash(DerivedFact(("P", "a"), [("Q", "a")], there))
+    assert fact != DerivedFact(("P", "a"), [("R", "a")], here)
+    assert fact._replace(supports=()).source == here
+    assert "source=SourceSpan(path='a.strips', line=3)" in repr(fact)
