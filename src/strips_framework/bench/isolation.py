@@ -18,9 +18,9 @@ import time
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
+from strips_framework.records import Record
 
 POLL_SECONDS = 0.02
-from strips_framework.records import Record
 
 
 class ChildOutcome(Record):

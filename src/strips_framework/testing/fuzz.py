@@ -31,6 +31,7 @@ from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from types import FrameType
 
+from strips_framework.records import Record
 
 FORMATS = (
     "pddl-domain",
@@ -88,7 +89,6 @@ _WORDS = [b"0", b"-1", b"1e400", b"nan", b"inf", b"-inf", b"1.5", b"9" * 5000, b
 _OPENERS = {b"(": b")", b"[": b"]", b"{": b"}", b"~": b"", b"not ": b"", b"!": b"",
             b"(not ": b")", b"x = [": b"]", b"x = {a = ": b"}"}
 _DEPTHS = (40, 99, 100, 101, 150, 250, 500, 1000, 5000, 50_000)
-from strips_framework.records import Record
 
 
 class Hang(BaseException):
