@@ -27,7 +27,6 @@ from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
-from attrs import define, field
 from strips_z3_prover import Z3Prover
 
 from strips_framework.logic.clauses import Clause
@@ -60,13 +59,21 @@ PROVERS = {
 Attempt = tuple[WorldModel, tuple[Clause, ...], int]
 
 
-@define
 class Recording:
-    """The attempts of one means-ends run, and the M0 they were made on."""
+    """The attempts of one means-ends run, and the M0 they were made on (mutable: the
+    attempts are appended as the run makes them)."""
 
-    initial: InitialModel
-    unique_names: bool
-    attempts: list[Attempt] = field(factory=list)
+    __slots__ = ("initial", "unique_names", "attempts")
+
+    def __init__(
+        self,
+        initial: InitialModel,
+        unique_names: bool,
+        attempts: list[Attempt] | None = None,
+    ) -> None:
+        self.initial = initial
+        self.unique_names = unique_names
+        self.attempts: list[Attempt] = [] if attempts is None else attempts
 
     def tasks(self) -> list[ProofTask]:
         """The attempts as one-off proof tasks over each model's visible clauses."""
@@ -84,12 +91,14 @@ class Recording:
         ]
 
 
-@define
 class _RecordingSession:
     """A resolution session that keeps the attempts it is asked."""
 
-    inner: ProverSession
-    recording: Recording
+    __slots__ = ("inner", "recording")
+
+    def __init__(self, inner: ProverSession, recording: Recording) -> None:
+        self.inner = inner
+        self.recording = recording
 
     def prove(
         self, model: WorldModel, negated_goal: Sequence[Clause], effort: int, max_answers: int = 1
@@ -104,7 +113,7 @@ def recorded_attempts(name: str) -> Recording:
     same, larger one.)"""
     planner = Planner.create(Config.from_dict({"limits": {"time": 60}}))
     problem = planner.load(EXAMPLES / f"{name}.strips")
-    original = GoalProver.__attrs_post_init__
+    original = GoalProver._open
     recordings: list[Recording] = []
 
     def record(self: GoalProver) -> None:
@@ -113,11 +122,11 @@ def recorded_attempts(name: str) -> Recording:
         recordings.append(recording)
         self.session = _RecordingSession(self.session, recording)
 
-    GoalProver.__attrs_post_init__ = record
+    GoalProver._open = record
     try:
         assert planner.solve(problem).solved
     finally:
-        GoalProver.__attrs_post_init__ = original
+        GoalProver._open = original
     return recordings[0]
 
 

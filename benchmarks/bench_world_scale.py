@@ -68,7 +68,7 @@ def measure(
     problem = planner.load(path)
     loaded = time.perf_counter()
     opened: list[float] = []
-    original = GoalProver.__attrs_post_init__
+    original = GoalProver._open
 
     def timed(self: GoalProver) -> None:
         begin = time.perf_counter()
@@ -77,11 +77,11 @@ def measure(
         measured["rss_after_load_mib"] = _rss_mib()
 
     measured: dict[str, float] = {}
-    GoalProver.__attrs_post_init__ = timed  # type: ignore[method-assign]
+    GoalProver._open = timed  # type: ignore[method-assign]
     try:
         result = planner.solve(problem)
     finally:
-        GoalProver.__attrs_post_init__ = original  # type: ignore[method-assign]
+        GoalProver._open = original  # type: ignore[method-assign]
     statistics = result.statistics
     attempts = statistics.proof_attempts
     measured.update(

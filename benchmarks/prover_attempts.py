@@ -27,12 +27,11 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
-from attrs import define
-
 from strips_framework.logic.clauses import Clause
 from strips_framework.means_ends.goal_prover import GoalProver
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Config
+from strips_framework.records import Record
 from strips_framework.worldmodel.proving import ProofResult, ProverSession
 from strips_framework.worldmodel.world import WorldModel
 
@@ -53,13 +52,15 @@ def _cpu() -> float:
     return own + children.ru_utime + children.ru_stime
 
 
-@define
 class _Timed:
-    """A session that counts its attempts and their CPU time."""
+    """A session that counts its attempts and their CPU time (mutable: the counts grow)."""
 
-    inner: ProverSession
-    attempts: int = 0
-    seconds: float = 0.0
+    __slots__ = ("inner", "attempts", "seconds")
+
+    def __init__(self, inner: ProverSession, attempts: int = 0, seconds: float = 0.0) -> None:
+        self.inner = inner
+        self.attempts = attempts
+        self.seconds = seconds
 
     def prove(
         self, model: WorldModel, negated_goal: Sequence[Clause], effort: int, max_answers: int = 1
@@ -72,12 +73,21 @@ class _Timed:
             self.attempts += 1
 
 
-@define
-class Measured:
+class Measured(Record):
+    """What one solve took: its nodes, its proof attempts and their CPU time."""
+
     nodes: int
     attempts: int
     seconds: float
     solved: bool
+
+    __slots__ = ("nodes", "attempts", "seconds", "solved")
+
+    def __init__(self, nodes: int, attempts: int, seconds: float, solved: bool) -> None:
+        self.nodes = nodes
+        self.attempts = attempts
+        self.seconds = seconds
+        self.solved = solved
 
     @property
     def per_attempt_ms(self) -> float:
@@ -89,7 +99,7 @@ def solve(task: str, prover: str) -> Measured:
     config = Config.from_dict({"prover": {"name": prover}, "limits": {"time": 3600}})
     planner = Planner.create(config)
     problem = planner.load(EXAMPLES / f"{task}.strips")
-    original = GoalProver.__attrs_post_init__
+    original = GoalProver._open
     sessions: list[_Timed] = []
 
     def timed(self: GoalProver) -> None:
@@ -97,11 +107,11 @@ def solve(task: str, prover: str) -> Measured:
         self.session = _Timed(self.session)
         sessions.append(self.session)
 
-    GoalProver.__attrs_post_init__ = timed
+    GoalProver._open = timed
     try:
         result = planner.solve(problem)
     finally:
-        GoalProver.__attrs_post_init__ = original
+        GoalProver._open = original
     return Measured(
         result.statistics.nodes,
         sum(s.attempts for s in sessions),

@@ -5,7 +5,6 @@ from pathlib import Path
 from typing import ClassVar
 
 import pytest
-from attrs import frozen
 
 from strips_framework.capabilities import (
     ADMISSIBLE,
@@ -18,6 +17,7 @@ from strips_framework.capabilities import (
 )
 from strips_framework.cli.main import main
 from strips_framework.errors import ConfigError, PluginError
+from strips_framework.options import Configurable
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Config
 from strips_framework.plugin.hookspecs import hookimpl
@@ -50,8 +50,7 @@ def test_evaluators_keep_admissible_and_their_capabilities_consistent():
         assert cls.admissible == (ADMISSIBLE in declared(cls, "evaluator")), cls
 
 
-@frozen
-class _Guesser:
+class _Guesser(Configurable):
     """A prover that cannot bind parameters."""
 
     name: ClassVar[str] = "guesser"
@@ -61,7 +60,6 @@ class _Guesser:
         return ProofResult("GaveUp", uncompleted=task.negated_goal)
 
 
-@frozen
 class _Anonymous(_Guesser):
     """A prover that says nothing about itself."""
 
@@ -115,7 +113,6 @@ def test_astar_with_an_inadmissible_evaluator_warns_at_config_time(tmp_path):
 
 
 def test_a_problem_needing_what_the_prover_lacks_fails_before_the_search(tmp_path):
-    @frozen
     class _Lookup(_Guesser):
         name: ClassVar[str] = "lookup"
         capabilities: ClassVar[frozenset[str]] = frozenset({SOUND, ANSWERS, UNCOMPLETED_PROOF})
@@ -200,8 +197,7 @@ def test_a_first_order_prover_takes_what_a_horn_prover_refuses(tmp_path):
 
 
 def test_capabilities_contradicting_admissible_are_a_plugin_error():
-    @frozen
-    class _Confused:
+    class _Confused(Configurable):
         name: ClassVar[str] = "confused"
         admissible: ClassVar[bool] = True
         capabilities: ClassVar[frozenset[str]] = frozenset()

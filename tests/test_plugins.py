@@ -5,9 +5,9 @@ from pathlib import Path
 from typing import ClassVar
 
 import pytest
-from attrs import frozen
 
 from strips_framework.errors import PluginError
+from strips_framework.options import Configurable
 from strips_framework.plugin import hookspecs
 from strips_framework.plugin.hookspecs import hookimpl
 from strips_framework.plugin.manager import get_plugin_manager
@@ -74,8 +74,7 @@ def test_with_autoload_off_the_message_names_the_plugins_left_unloaded(monkeypat
         registry.get("strategy", "dfs")
 
 
-@frozen
-class _Clash:
+class _Clash(Configurable):
     """A second 'means-ends'."""
 
     name: ClassVar[str] = "means-ends"

@@ -27,3 +27,26 @@ def test_replace_recomputes_what_a_record_derives_from_its_fields():
     moved = op._replace(pre=(3,))
     assert moved.pre_mask == 0b1000 and op.pre_mask == 0b1
     assert moved != op and moved._replace(pre=(0,)) == op
+
+
+def test_a_subclass_adding_no_slots_keeps_its_bases_fields():
+    from strips_framework.logic.formulas import And as WffAnd
+    from strips_framework.logic.formulas import Or as WffOr
+    from strips_framework.logic.formulas import Truth
+
+    parts = (Truth(True),)
+    assert WffAnd.FIELDS == WffOr.FIELDS == ("parts",)
+    assert WffAnd(parts) != WffAnd(()) and WffAnd(parts) != WffOr(parts)
+    assert repr(WffAnd(parts)) == "And(parts=(Truth(value=True),))"
+
+
+def test_fields_left_out_of_compared_are_kept_by_repr_and_replace_but_not_compared():
+    from strips_framework.worldmodel.problem import DerivedFact, SourceSpan
+
+    here, there = SourceSpan("a.strips", 3), SourceSpan("b.strips", 9)
+    fact = DerivedFact(("P", "a"), [("Q", "a")], here)
+    assert fact == DerivedFact(("P", "a"), [("Q", "a")], there)
+    assert hash(fact) == hash(DerivedFact(("P", "a"), [("Q", "a")], there))
+    assert fact != DerivedFact(("P", "a"), [("R", "a")], here)
+    assert fact._replace(supports=()).source == here
+    assert "source=SourceSpan(path='a.strips', line=3)" in repr(fact)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import attrs
 import pytest
 
 from strips_framework.formats.native import NativeLoader
@@ -271,7 +270,7 @@ def test_horn_axioms_are_closed_under_chaining() -> None:
     # Without the symmetry axiom, the second door cannot be reached from the corridor.
     plan = ["goto2(DOOR1)", "gothrudoor(DOOR1,ROOM1,ROOM5)", "goto2(DOOR4)"]
     assert replay(robot_world(ROBOT_AT_F), plan).message.startswith("the goal fails")
-    asymmetric = attrs.evolve(robot_world(ROBOT_AT_F), axioms=ROBOT_AXIOMS[1:])
+    asymmetric = robot_world(ROBOT_AT_F)._replace(axioms=ROBOT_AXIOMS[1:])
     result = replay(asymmetric, plan)
     assert result.step == 2
     assert "precondition exists x: INROOM(ROBOT, x) & INROOM(DOOR4, x)" in result.message

@@ -8,7 +8,6 @@ from pathlib import Path
 from typing import ClassVar
 
 import pytest
-from attrs import field, frozen, validators
 
 from strips_framework.capabilities import (
     ADMISSIBLE,
@@ -51,8 +50,7 @@ CASE = {case.name: case for case in CASES}
 DATA = Path(__file__).resolve().parent / "data"
 
 
-@frozen
-class _Yes:
+class _Yes(Configurable):
     """Proves everything, binding every parameter of the goal to 'nowhere'."""
 
     name: ClassVar[str] = "yes"
@@ -64,8 +62,7 @@ class _Yes:
         return ProofResult(PROVED, (tuple((p, "nowhere") for p in params),), effort_used=1)
 
 
-@frozen
-class _No:
+class _No(Configurable):
     """Says Satisfiable to everything."""
 
     name: ClassVar[str] = "no"
@@ -96,8 +93,7 @@ def test_a_prover_ignoring_its_effort_bound_is_caught():
 
 
 def test_a_complete_prover_must_find_every_answer_asked_for():
-    @frozen
-    class _First:
+    class _First(Configurable):
         name: ClassVar[str] = "first"
 
         def prove(self, task: ProofTask) -> ProofResult:
@@ -109,12 +105,10 @@ def test_a_complete_prover_must_find_every_answer_asked_for():
 
 
 def test_declarations_are_checked():
-    @frozen
-    class _Silent:
+    class _Silent(Configurable):
         name: ClassVar[str] = "silent"
 
-    @frozen
-    class _Typo:
+    class _Typo(Configurable):
         name: ClassVar[str] = "typo"
         capabilities: ClassVar[frozenset[str]] = frozenset({"anwsers"})
 
@@ -125,12 +119,12 @@ def test_declarations_are_checked():
 
 
 def test_options_declared_otherwise_are_caught():
-    @frozen
     class _Lax:
         name: ClassVar[str] = "lax"
         capabilities: ClassVar[frozenset[str]] = frozenset()
-        strict: int = field(default=1, validator=validators.instance_of(int))
-        patience: int = 3
+
+        def __init__(self, strict: int = 1, patience: int = 3) -> None:
+            self.strict, self.patience = strict, patience
 
     with pytest.raises(ConformanceFailure, match="takes strict, patience but declares no options"):
         check_declaration(_Lax, "prover")
@@ -142,8 +136,7 @@ def test_options_declared_otherwise_are_caught():
     check_options_refuse_wrong_values(_Typed)  # the option system refuses a wrong value
 
 
-@frozen
-class _Overestimating:
+class _Overestimating(Configurable):
     """Claims admissible, but counts two steps per goal on the goal list, plus one."""
 
     name: ClassVar[str] = "overestimating"
@@ -172,11 +165,9 @@ def test_the_kits_optimum_is_the_known_one():
 def test_one_line_in_a_plugins_tests_runs_the_kit_and_reports_failures(pytester):
     pytester.makepyfile(test_broken=textwrap.dedent("""
         from typing import ClassVar
-        from attrs import frozen
         from strips_framework.worldmodel.proving import ProofResult
         from strips_framework.testing import ProverConformance
 
-        @frozen
         class Defeatist:
             name: ClassVar[str] = "defeatist"
             capabilities: ClassVar[frozenset[str]] = frozenset({"sound", "answers"})
@@ -224,13 +215,16 @@ def test_the_suites_build_the_class_with_the_options_given(pytester):
     result.stdout.fnmatch_lines(["*TestWeightless::test_declaration*"])
 
 
-@frozen
 class _Estimator:
     """Estimates by a function of the task and the state; prefers what ``prefer`` says."""
 
-    task: GroundTask
-    value: Callable[[GroundTask, int], float]
-    prefer: Callable[[GroundTask, int], list[int]] = lambda task, state: []
+    def __init__(
+        self,
+        task: GroundTask,
+        value: Callable[[GroundTask, int], float],
+        prefer: Callable[[GroundTask, int], list[int]],
+    ) -> None:
+        self.task, self.value, self.prefer = task, value, prefer
 
     def estimate(self, state: int) -> float:
         return self.value(self.task, state)
@@ -242,8 +236,7 @@ class _Estimator:
 def _heuristic(name: str, value, claims=frozenset(), prefer=lambda task, state: []) -> type:
     """A state heuristic class named ``name`` declaring ``claims``."""
 
-    @frozen
-    class _Heuristic:
+    class _Heuristic(Configurable):
         capabilities: ClassVar[frozenset[str]] = frozenset(claims)
 
         def for_task(self, task: GroundTask) -> _Estimator:
@@ -299,8 +292,7 @@ def test_a_heuristic_with_a_memory_is_caught():
         check_heuristic(moody(), "delivery-2", frozenset())
 
 
-@frozen
-class _Hasty:
+class _Hasty(Configurable):
     """Returns the first operator as the whole plan."""
 
     name: ClassVar[str] = "hasty"
@@ -331,12 +323,11 @@ def test_one_line_runs_the_heuristic_kit_and_reports_failures(pytester):
     pytester.makepyfile(test_broken_heuristic=textwrap.dedent("""
         import math
         from typing import ClassVar
-        from attrs import frozen
         from strips_framework.testing import HeuristicConformance
 
-        @frozen
         class Estimator:
-            task: object
+            def __init__(self, task):
+                self.task = task
 
             def estimate(self, state):
                 return 0.0 if self.task.is_goal(state) else 100.0
@@ -344,7 +335,6 @@ def test_one_line_runs_the_heuristic_kit_and_reports_failures(pytester):
             def estimate_with_preferred(self, state):
                 return self.estimate(state), ()
 
-        @frozen
         class Boastful:
             name: ClassVar[str] = "boastful"
             capabilities: ClassVar[frozenset[str]] = frozenset({"admissible"})

@@ -9,11 +9,10 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from attrs import frozen
-
 from strips_framework.macrops.learning import MacroLearner
 from strips_framework.macrops.macrop import Library
 from strips_framework.macrops.table import Step
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import Problem
 
 if TYPE_CHECKING:
@@ -21,8 +20,7 @@ if TYPE_CHECKING:
     from strips_framework.result import Result
 
 
-@frozen
-class Lesson:
+class Lesson(Record):
     """One problem of a learning sequence: how it was solved and what was learned."""
 
     problem: str
@@ -32,6 +30,26 @@ class Lesson:
     plan_length: int | None
     macrops_used: int
     note: str
+
+    __slots__ = ("problem", "status", "nodes", "seconds", "plan_length", "macrops_used", "note")
+
+    def __init__(
+        self,
+        problem: str,
+        status: str,
+        nodes: int,
+        seconds: float,
+        plan_length: int | None,
+        macrops_used: int,
+        note: str,
+    ) -> None:
+        self.problem = problem
+        self.status = status
+        self.nodes = nodes
+        self.seconds = seconds
+        self.plan_length = plan_length
+        self.macrops_used = macrops_used
+        self.note = note
 
 
 def solve_with(

@@ -119,7 +119,7 @@ class Configurable(Record):
 
     def __init_subclass__(cls) -> None:
         super().__init_subclass__()
-        cls.FIELDS = tuple(option.name for option in cls.options)
+        cls.FIELDS = cls.COMPARED = tuple(option.name for option in cls.options)
 
     def __init__(self, **values: object) -> None:
         declared_names = {option.name for option in self.options}

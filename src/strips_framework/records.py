@@ -1,15 +1,23 @@
 """Records: immutable values as plain classes with ``__slots__``.
 
-The PDDL solve path builds its records (formulas, the lifted and the ground task, the
-result, the config) with this base rather than attrs or :class:`typing.NamedTuple`: an
-attrs class compiles its generated methods when it is built, and a NamedTuple evaluates
-its annotations and compiles its constructor, at every start-up; a slotted class with a
+Every value of the core and of the plugins here (formulas, clauses, world models, tasks,
+results, the config) is a record, rather than an attrs class, a dataclass or a
+:class:`typing.NamedTuple` (``tests/test_value_declarations.py`` checks it): an attrs
+class compiles its generated methods when it is built, and a NamedTuple evaluates its
+annotations and compiles its constructor, at every start-up; a slotted class with a
 written-out ``__init__`` is built about twenty times faster, which on a small task is a
-measurable part of the whole run (``benchmarks/startup_vs_pyperplan.py``). A subclass
-lists its fields in ``__slots__`` (or, when it also keeps values computed from them, in
-``FIELDS``) and assigns them in ``__init__``; :class:`Record` gives it equality and
+measurable part of the whole run (``benchmarks/startup_declarations.py``,
+``benchmarks/startup_vs_pyperplan.py``). Converters and checks are written in
+``__init__``; state that changes (counters, caches, a search's nodes) lives in plain
+classes with ``__slots__``, not in records.
+
+A subclass lists its fields in ``__slots__`` (or, when it also keeps values computed from
+them, in ``FIELDS``) and assigns them in ``__init__``; :class:`Record` gives it equality and
 hashing by type and fields (so two record types with the same fields never compare
-equal), a ``repr`` and ``_replace``. Records are not changed after they are built.
+equal), a ``repr`` and ``_replace``. A field that says where a value came from (a source
+line, a label) but not what it is stays out of ``COMPARED``, the fields equality and the
+hash look at (``FIELDS`` unless the class says otherwise); ``repr`` and ``_replace`` keep
+it. Records are not changed after they are built.
 """
 
 from __future__ import annotations
@@ -26,16 +34,22 @@ class Record:
     """Equality, hash, ``repr`` and ``_replace`` from the fields the constructor takes."""
 
     __slots__ = ()
-    #: The constructor's parameters, in order; ``__slots__`` unless the class says otherwise.
+    #: The constructor's parameters, in order; ``__slots__`` unless the class says otherwise
+    #: (a subclass that adds no slots keeps its base's, as ``And`` and ``Or`` share theirs).
     FIELDS: ClassVar[tuple[str, ...]] = ()
+    #: The fields equality and the hash compare; ``FIELDS`` unless the class says otherwise.
+    COMPARED: ClassVar[tuple[str, ...]] = ()
 
     def __init_subclass__(cls) -> None:
         super().__init_subclass__()
+        declares = "FIELDS" in cls.__dict__ or bool(cls.__dict__.get("__slots__"))
         if "FIELDS" not in cls.__dict__:
-            cls.FIELDS = tuple(cls.__dict__.get("__slots__", ()))
+            cls.FIELDS = tuple(cls.__dict__.get("__slots__", ())) or cls.FIELDS
+        if "COMPARED" not in cls.__dict__ and declares:
+            cls.COMPARED = cls.FIELDS
 
     def _values(self) -> tuple[object, ...]:
-        return tuple([getattr(self, name) for name in self.FIELDS])
+        return tuple([getattr(self, name) for name in self.COMPARED])
 
     def __eq__(self, other: object) -> bool:
         return type(other) is type(self) and other._values() == self._values()  # type: ignore[attr-defined]
@@ -52,5 +66,5 @@ class Record:
 
     def _replace(self: _R, **changes: object) -> _R:
         """A copy with ``changes`` (fields by name), as a NamedTuple's ``_replace``."""
-        values = dict(zip(self.FIELDS, self._values(), strict=True))
+        values = {name: getattr(self, name) for name in self.FIELDS}
         return type(self)(**{**values, **changes})

@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import re
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -163,8 +164,6 @@ def test_macrop_uses_are_marked(tmp_path):
 
 def test_fields_a_strategy_adds_are_shown(monkeypatch):
     """A node field the page does not know (an ABSTRIPS level, say) is carried by name."""
-    import attrs
-
     from strips_framework.explore import record as record_module
 
     record = recorded(LIGHT)
@@ -176,9 +175,12 @@ def test_fields_a_strategy_adds_are_shown(monkeypatch):
     # A strategy's own node class with one more field: the field is found by name.
     from strips_framework.means_ends.node import Node
 
-    @attrs.define(eq=False)
     class RankedNode(Node):
-        rank: int = 0
+        __slots__ = ("rank",)
+
+        def __init__(self, *fields: Any, rank: int = 0) -> None:
+            super().__init__(*fields)
+            self.rank = rank
 
     node = record.result.tree.nodes[0]
     mine = RankedNode(node.id, node.model, node.goals, None, rank=2)

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import itertools
 
-import attrs
 import pytest
 
 from strips_framework.logic.terms import Param
@@ -82,7 +81,7 @@ def test_every_edited_part_replays(robot, generalized, name):
 
 
 def test_dropping_the_protections_is_caught(robot, generalized):
-    table = attrs.evolve(generalized["boxes"].table, distinct=())
+    table = generalized["boxes"].table._replace(distinct=())
     simulator = Simulator(robot["boxes"])
     found = next(counterexamples(simulator, table, random_states(robot["boxes"], 150, 13)), None)
     assert found is not None

@@ -5,11 +5,10 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.learning import learn_sequence
 from strips_framework.macrops.macrop import Library, Macrop
 from strips_framework.macrops.table import TriangleTable
+from strips_framework.options import Configurable
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import Config
 from strips_framework.plugin.hookspecs import hookimpl
@@ -17,8 +16,7 @@ from strips_framework.plugin.hookspecs import hookimpl
 from .conftest import ROBOT_WORLD
 
 
-@frozen
-class UngeneralizedLearner:
+class UngeneralizedLearner(Configurable):
     """Keeps each plan as it is, ground (a learner that does not generalize)."""
 
     name: ClassVar[str] = "ground-plans"

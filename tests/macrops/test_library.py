@@ -3,7 +3,6 @@ line; a library learned on another world is refused."""
 
 from __future__ import annotations
 
-import attrs
 import pytest
 
 from strips_framework.errors import InputError
@@ -65,10 +64,10 @@ def test_a_library_from_another_world_is_refused(tmp_path, robot, library):
     path.write_text(library_text(library, "robot-world"))
     problem = robot["light"]
     changed = [
-        attrs.evolve(s, precondition=And(s.precondition.parts[1:])) if s.name == "pushto" else s
+        s._replace(precondition=And(s.precondition.parts[1:])) if s.name == "pushto" else s
         for s in problem.operators
     ]
-    other = attrs.evolve(problem, operators=changed)
+    other = problem._replace(operators=changed)
     with pytest.raises(InputError, match="learned on another world") as caught:
         read_library(path, other)
     assert "pushto(m, n)" in str(caught.value) and caught.value.line is not None

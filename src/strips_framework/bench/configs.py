@@ -18,10 +18,10 @@ from pathlib import Path
 from typing import Any
 
 import tomli_w
-from attrs import frozen
 
 from strips_framework.bench import anchors
 from strips_framework.bench.problems import PDDL, ProblemFile
+from strips_framework.records import Record
 
 #: ``strips`` in the child's interpreter, found without relying on PATH (a Dask worker's
 #: PATH need not hold the virtual environment).
@@ -29,13 +29,19 @@ STRIPS = ("-c", "import sys; from strips_framework.cli.main import main; sys.exi
 PLACEHOLDERS = ("python", "problem", "domain", "plan", "folder")
 
 
-@frozen
-class RunFiles:
+class RunFiles(Record):
     """Where one run reads and writes: its private folder holds the plan and any config."""
 
     problem: Path
     domain: Path | None
     folder: Path
+
+    __slots__ = ("problem", "domain", "folder")
+
+    def __init__(self, problem: Path, domain: Path | None, folder: Path) -> None:
+        self.problem = problem
+        self.domain = domain
+        self.folder = folder
 
     @property
     def plan(self) -> Path:
@@ -57,6 +63,7 @@ class AnyProblemConfig:
     """What most configurations share: they take every problem, need nothing installed,
     read the problem where it is and write the plan to the run's ``plan.txt``."""
 
+    __slots__ = ()
     copies_inputs = False
 
     def plan_file(self, files: RunFiles) -> Path:
@@ -69,13 +76,18 @@ class AnyProblemConfig:
         return None
 
 
-@frozen
-class PlannerConfig(AnyProblemConfig):
+class PlannerConfig(AnyProblemConfig, Record):
     """``strips solve PROBLEM --json`` with ``data`` written out as its ``strips.toml``, its
     time limit no longer than the matrix's allows (:func:`planner_time_limit`)."""
 
     name: str
     data: dict[str, Any]
+
+    __slots__ = ("name", "data")
+
+    def __init__(self, name: str, data: dict[str, Any]) -> None:
+        self.name = name
+        self.data = data
 
     def command(self, files: RunFiles, time_limit: float) -> list[str]:
         config = files.folder / "strips.toml"
@@ -112,12 +124,17 @@ def searches_ground_tasks(data: dict[str, Any]) -> bool:
     return name in ground_strategy_names()
 
 
-@frozen
-class CommandConfig(AnyProblemConfig):
+class CommandConfig(AnyProblemConfig, Record):
     """A command line with placeholders ``{python} {problem} {domain} {plan} {folder}``."""
 
     name: str
     template: tuple[str, ...]
+
+    __slots__ = ("name", "template")
+
+    def __init__(self, name: str, template: tuple[str, ...]) -> None:
+        self.name = name
+        self.template = template
 
     def command(self, files: RunFiles, time_limit: float) -> list[str]:
         values = {
@@ -131,15 +148,28 @@ class CommandConfig(AnyProblemConfig):
         return {"kind": "command", "command": list(self.template)}
 
 
-@frozen
-class AnchorConfig:
+class AnchorConfig(Record):
     """pyperplan (``args`` e.g. ``-s gbf -H hff``) or Fast Downward (``args`` are driver
     options such as ``--alias lama-first``; ``search`` its ``--search`` string)."""
 
     name: str
     planner: str
     args: tuple[str, ...]
-    search: str | None = None
+    search: str | None
+
+    __slots__ = ("name", "planner", "args", "search")
+
+    def __init__(
+        self,
+        name: str,
+        planner: str,
+        args: tuple[str, ...],
+        search: str | None = None,
+    ) -> None:
+        self.name = name
+        self.planner = planner
+        self.args = args
+        self.search = search
     #: pyperplan writes its plan beside the problem: each run works on private copies.
     copies_inputs = True
 

@@ -14,7 +14,6 @@ from collections.abc import Generator, Sequence
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from typing import Any, Protocol
 
-from attrs import frozen
 from rich.console import Console
 from rich.progress import (
     BarColumn,
@@ -29,15 +28,22 @@ from strips_framework.bench.isolation import LiveGroups
 from strips_framework.bench.matrix import RunSpec
 from strips_framework.bench.runner import FAILURES, SOLVED, execute
 from strips_framework.errors import ConfigError
+from strips_framework.records import Record
 
 
-@frozen
-class Completed:
+class Completed(Record):
     """A finished run: its row, or why the executor lost it (no row is written then)."""
 
     spec: RunSpec
     row: dict[str, Any] | None
-    lost: str | None = None
+    lost: str | None
+
+    __slots__ = ("spec", "row", "lost")
+
+    def __init__(self, spec: RunSpec, row: dict[str, Any] | None, lost: str | None = None) -> None:
+        self.spec = spec
+        self.row = row
+        self.lost = lost
 
 
 class Executor(Protocol):
@@ -51,11 +57,15 @@ class Sink(Protocol):
     def write(self, row: dict[str, Any]) -> bool: ...
 
 
-@frozen
-class LocalExecutor:
+class LocalExecutor(Record):
     """``jobs`` runs at a time on this machine (threads, each waiting on its child)."""
 
-    jobs: int = 1
+    jobs: int
+
+    __slots__ = ("jobs",)
+
+    def __init__(self, jobs: int = 1) -> None:
+        self.jobs = jobs
 
     def results(self, specs: Sequence[RunSpec]) -> Generator[Completed, None, None]:
         live = LiveGroups()
@@ -69,11 +79,15 @@ class LocalExecutor:
             live.close()
 
 
-@frozen
-class DaskExecutor:
+class DaskExecutor(Record):
     """The runs as tasks on the Dask cluster whose scheduler is at ``address``."""
 
     address: str
+
+    __slots__ = ("address",)
+
+    def __init__(self, address: str) -> None:
+        self.address = address
 
     def results(self, specs: Sequence[RunSpec]) -> Generator[Completed, None, None]:
         from distributed import Client

@@ -18,19 +18,36 @@ import time
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-from attrs import frozen
+from strips_framework.records import Record
 
 POLL_SECONDS = 0.02
 
 
-@frozen
-class ChildOutcome:
+class ChildOutcome(Record):
     exit_code: int  # negative: killed by that signal
     timed_out: bool
     wall_seconds: float
     peak_memory_kib: int
     stdout: str
     stderr: str
+
+    __slots__ = ("exit_code", "timed_out", "wall_seconds", "peak_memory_kib", "stdout", "stderr")
+
+    def __init__(
+        self,
+        exit_code: int,
+        timed_out: bool,
+        wall_seconds: float,
+        peak_memory_kib: int,
+        stdout: str,
+        stderr: str,
+    ) -> None:
+        self.exit_code = exit_code
+        self.timed_out = timed_out
+        self.wall_seconds = wall_seconds
+        self.peak_memory_kib = peak_memory_kib
+        self.stdout = stdout
+        self.stderr = stderr
 
 
 class LiveGroups:

@@ -27,8 +27,6 @@ import warnings
 from pathlib import Path
 from typing import Any, NoReturn
 
-from attrs import frozen
-
 from strips_framework.bench import anchors
 from strips_framework.bench.configs import (
     PLACEHOLDERS,
@@ -43,6 +41,7 @@ from strips_framework.limits import MAX_MEMORY, MAX_TIME
 from strips_framework.planner import Planner
 from strips_framework.plugin.config import COMPONENTS, DEFAULT_CHOICES, Config
 from strips_framework.plugin.registry import Registry
+from strips_framework.records import Record
 from strips_framework.user_files import KeyLines, read_toml, read_toml_with_keys
 
 PRODUCT_KINDS = (*COMPONENTS, "heuristic")
@@ -56,14 +55,18 @@ MAX_REPETITIONS = 10_000
 MAX_HASH_SEED = 2**32 - 1
 
 
-@frozen
-class RunLimits:
-    time: float = DEFAULT_TIME
-    memory: int = DEFAULT_MEMORY  # MiB
+class RunLimits(Record):
+    time: float
+    memory: int  # MiB
+
+    __slots__ = ("time", "memory")
+
+    def __init__(self, time: float = DEFAULT_TIME, memory: int = DEFAULT_MEMORY) -> None:
+        self.time = time
+        self.memory = memory
 
 
-@frozen
-class RunSpec:
+class RunSpec(Record):
     """One run: everything a worker needs, picklable, so it can travel to a Dask worker."""
 
     problem: ProblemFile
@@ -71,7 +74,25 @@ class RunSpec:
     repetition: int
     seed: int
     limits: RunLimits
-    position: int = 0  # in the matrix's order, which reports keep
+    position: int  # in the matrix's order, which reports keep
+
+    __slots__ = ("problem", "config", "repetition", "seed", "limits", "position")
+
+    def __init__(
+        self,
+        problem: ProblemFile,
+        config: Configuration,
+        repetition: int,
+        seed: int,
+        limits: RunLimits,
+        position: int = 0,
+    ) -> None:
+        self.problem = problem
+        self.config = config
+        self.repetition = repetition
+        self.seed = seed
+        self.limits = limits
+        self.position = position
 
     @property
     def key(self) -> str:
@@ -82,14 +103,31 @@ def run_key(problem: str, config: str, repetition: int) -> str:
     return f"{problem} | {config} | {repetition}"
 
 
-@frozen
-class Matrix:
+class Matrix(Record):
     source: str
     problems: tuple[ProblemFile, ...]
     configs: tuple[Configuration, ...]
     repetitions: int
     seed: int
     limits: RunLimits
+
+    __slots__ = ("source", "problems", "configs", "repetitions", "seed", "limits")
+
+    def __init__(
+        self,
+        source: str,
+        problems: tuple[ProblemFile, ...],
+        configs: tuple[Configuration, ...],
+        repetitions: int,
+        seed: int,
+        limits: RunLimits,
+    ) -> None:
+        self.source = source
+        self.problems = problems
+        self.configs = configs
+        self.repetitions = repetitions
+        self.seed = seed
+        self.limits = limits
 
     @classmethod
     def from_file(cls, path: Path) -> Matrix:

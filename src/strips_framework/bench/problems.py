@@ -12,16 +12,14 @@ import glob
 import os
 from pathlib import Path
 
-from attrs import frozen
-
 from strips_framework.errors import ConfigError, InputError
 from strips_framework.pddl import find_domain as find_pddl_domain
+from strips_framework.records import Record
 
 PDDL = ".pddl"
 
 
-@frozen
-class ProblemFile:
+class ProblemFile(Record):
     """One problem of a set; ``name`` is its path as the matrix's folder sees it, unique
     within the matrix and stable across machines, so it keys the results."""
 
@@ -29,6 +27,14 @@ class ProblemFile:
     problem_set: str
     path: Path
     domain: Path | None
+
+    __slots__ = ("name", "problem_set", "path", "domain")
+
+    def __init__(self, name: str, problem_set: str, path: Path, domain: Path | None) -> None:
+        self.name = name
+        self.problem_set = problem_set
+        self.path = path
+        self.domain = domain
 
 
 def is_domain_file(path: Path) -> bool:

@@ -16,9 +16,8 @@ from collections.abc import Sequence
 from pathlib import PurePath
 from typing import Any
 
-from attrs import frozen
-
 from strips_framework.bench.runner import FAILURES, SOLVED, UNSOLVED
+from strips_framework.records import Record
 
 COLUMNS = (
     "config", "solved", "unsolved", "timeout", "memout", "crash", "invalid",
@@ -27,8 +26,7 @@ COLUMNS = (
 )
 
 
-@frozen
-class Task:
+class Task(Record):
     problem: str
     config: str
     solved: bool
@@ -41,7 +39,36 @@ class Task:
     invalid: bool
     #: The benchmark domain, as Downward Lab groups tasks: the problem's folder (else
     #: its problem set).
-    domain: str = ""
+    domain: str
+
+    __slots__ = ("problem", "config", "solved", "status", "time", "expanded", "plan_length",
+                 "proving_seconds", "planner_seconds", "invalid", "domain")  # fmt: skip
+
+    def __init__(
+        self,
+        problem: str,
+        config: str,
+        solved: bool,
+        status: str,
+        time: float | None,
+        expanded: float | None,
+        plan_length: float | None,
+        proving_seconds: float | None,
+        planner_seconds: float | None,
+        invalid: bool,
+        domain: str = "",
+    ) -> None:
+        self.problem = problem
+        self.config = config
+        self.solved = solved
+        self.status = status
+        self.time = time
+        self.expanded = expanded
+        self.plan_length = plan_length
+        self.proving_seconds = proving_seconds
+        self.planner_seconds = planner_seconds
+        self.invalid = invalid
+        self.domain = domain
 
 
 def _median(values: list[Any]) -> float | None:

@@ -259,9 +259,13 @@ def _world_model(tree: Any, notes: Mapping[int, _NodeNotes], strings: Strings) -
 
 def _fields(node: Any) -> dict[str, Any]:
     """A node's fields by name: any field a strategy adds (an ABSTRIPS level, say) shows
-    on the page without the page knowing it."""
-    import attrs
-
-    if attrs.has(type(node)):
-        return {field.name: getattr(node, field.name) for field in attrs.fields(type(node))}
-    return dict(vars(node))
+    on the page without the page knowing it. Fields are the public slots of the node's
+    classes (a subclass's own first) and any instance attributes."""
+    fields = {
+        name: getattr(node, name)
+        for cls in type(node).__mro__
+        for name in cls.__dict__.get("__slots__", ())
+        if not name.startswith("_") and hasattr(node, name)
+    }
+    fields.update(getattr(node, "__dict__", {}))
+    return fields

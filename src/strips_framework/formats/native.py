@@ -23,15 +23,14 @@ from __future__ import annotations
 import re
 from collections.abc import Collection
 from pathlib import Path
-from typing import ClassVar, NamedTuple
-
-from attrs import frozen
+from typing import ClassVar
 
 from strips_framework.errors import InputError
 from strips_framework.logic.formulas import Formula, Truth, params_in
 from strips_framework.logic.parser import Arities, Token, WffParser, tokenize
 from strips_framework.logic.terms import Atom, Param, atom_to_str, params_of
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 from strips_framework.user_files import read_text
 from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem, SourceSpan
 
@@ -54,14 +53,22 @@ _GROUND_HINT = "facts must be ground; write quantified statements under 'axioms'
 _CLOSED_HINT = "a variable must be bound by 'forall' or 'exists'"
 
 
-class Entry(NamedTuple):
+class Entry(Record):
     """A piece of a file: a first line and the lines that continue it, with its position
-    (a named tuple: a large world has one per fact, and tuples are made fastest)."""
+    (a slotted record: a large world has one per fact, and these are made fastest)."""
 
     path: str
     line: int
     column: int
     text: str
+
+    __slots__ = ("path", "line", "column", "text")
+
+    def __init__(self, path: str, line: int, column: int, text: str) -> None:
+        self.path = path
+        self.line = line
+        self.column = column
+        self.text = text
 
     def parser(
         self,
@@ -76,13 +83,19 @@ class Entry(NamedTuple):
         )
 
 
-@frozen
-class Block:
+class Block(Record):
     """A line that starts in column 1 (``header``) and the entries indented under it."""
 
     keyword: str
     header: Entry
     entries: tuple[Entry, ...]
+
+    __slots__ = ("keyword", "header", "entries")
+
+    def __init__(self, keyword: str, header: Entry, entries: tuple[Entry, ...]) -> None:
+        self.keyword = keyword
+        self.header = header
+        self.entries = entries
 
 
 def read_blocks(path: Path, shown: str, including: tuple[Path, ...] = ()) -> list[Block]:

@@ -21,8 +21,6 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TypeVar
 
-from attrs import frozen
-
 from strips_framework.capabilities import ANSWER_LITERALS, declared
 from strips_framework.errors import InputError
 from strips_framework.logic.clauses import Clause
@@ -41,7 +39,9 @@ from strips_framework.logic.formulas import (
     Var,
     substitute_free,
 )
+from strips_framework.logic.parser import Token
 from strips_framework.logic.terms import ANSWER, EQUALITY, SKOLEM_PREFIX, Param, Term
+from strips_framework.records import Record
 from strips_framework.user_files import MAX_NESTING, read_text
 from strips_framework.worldmodel.proving import (
     GAVE_UP,
@@ -80,16 +80,10 @@ class Inappropriate(InputError):
     opposed to a syntax error: a defined symbol such as ``$sum``."""
 
 
-@frozen
-class _Token:
-    kind: str  # "word", "var", "dollar", "quoted", "distinct", "number", "op", "end"
-    text: str
-    line: int
-    column: int
-
-
-def _tokenize(text: str, path: str) -> list[_Token]:
-    tokens: list[_Token] = []
+def _tokenize(text: str, path: str) -> list[Token]:
+    """The tokens of a TPTP text, of kinds "word", "var", "dollar", "quoted", "distinct",
+    "number" and "op", then one of kind "end"."""
+    tokens: list[Token] = []
     pos, line, line_start = 0, 1, 0
     while pos < len(text):
         found = _TOKEN.match(text, pos)
@@ -99,18 +93,17 @@ def _tokenize(text: str, path: str) -> list[_Token]:
             )
         kind = found.lastgroup or ""
         if kind != "space":
-            tokens.append(_Token(kind, found.group(), line, pos - line_start + 1))
+            tokens.append(Token(kind, found.group(), line, pos - line_start + 1))
         newlines = found.group().count("\n")
         if newlines:
             line += newlines
             line_start = found.start() + found.group().rfind("\n") + 1
         pos = found.end()
-    tokens.append(_Token("end", "", line, pos - line_start + 1))
+    tokens.append(Token("end", "", line, pos - line_start + 1))
     return tokens
 
 
-@frozen
-class TptpFormula:
+class TptpFormula(Record):
     """One annotated formula: ``language(name, role, formula)``."""
 
     name: str
@@ -118,6 +111,15 @@ class TptpFormula:
     language: str  # "cnf" or "fof"
     formula: Formula
     line: int
+
+    __slots__ = ("name", "role", "language", "formula", "line")
+
+    def __init__(self, name: str, role: str, language: str, formula: Formula, line: int) -> None:
+        self.name = name
+        self.role = role
+        self.language = language
+        self.formula = formula
+        self.line = line
 
 
 class _Parser:
@@ -133,22 +135,22 @@ class _Parser:
 
     # -- token helpers --------------------------------------------------------------------
 
-    def peek(self) -> _Token:
+    def peek(self) -> Token:
         return self.tokens[self.pos]
 
-    def next(self) -> _Token:
+    def next(self) -> Token:
         token = self.tokens[self.pos]
         self.pos += 1
         return token
 
-    def error(self, expected: str, token: _Token | None = None) -> InputError:
+    def error(self, expected: str, token: Token | None = None) -> InputError:
         token = token or self.peek()
         found = repr(token.text) if token.kind != "end" else "end of file"
         return InputError(
             self.path, token.line, token.column, f"expected {expected}, found {found}"
         )
 
-    def uninterpreted(self, token: _Token) -> Inappropriate:
+    def uninterpreted(self, token: Token) -> Inappropriate:
         """A defined (``$sum``, ``$less``, ``$int``) or system (``$$...``) symbol: it has
         a meaning (arithmetic, types) that the provers do not interpret, and reading it as
         an uninterpreted symbol would make saturation claim Satisfiable of a problem
@@ -161,7 +163,7 @@ class _Parser:
             "interpreted; arithmetic and types are not)",
         )
 
-    def expect(self, text: str) -> _Token:
+    def expect(self, text: str) -> Token:
         token = self.peek()
         if token.kind != "op" or token.text != text:
             raise self.error(f"'{text}'")
@@ -198,7 +200,7 @@ class _Parser:
             formulas.append(self.annotated(token))
         return formulas
 
-    def annotated(self, start: _Token) -> TptpFormula:
+    def annotated(self, start: Token) -> TptpFormula:
         self.expect("(")
         name = self.name("a formula name")
         self.expect(",")
@@ -406,8 +408,7 @@ def _close(formula: Formula) -> Formula:
 # -- problems ------------------------------------------------------------------------------
 
 
-@frozen
-class TptpProblem:
+class TptpProblem(Record):
     """A parsed TPTP file."""
 
     path: str
@@ -416,7 +417,19 @@ class TptpProblem:
     #: them as themselves, so two different ones are unequal: :meth:`task` adds that as
     #: axioms, since without them saturation could claim Satisfiable of ``"a" = "b"``.
     #: (Arithmetic on numbers, ``$sum`` and the like, is refused when read.)
-    distinct_objects: tuple[str, ...] = ()
+    distinct_objects: tuple[str, ...]
+
+    __slots__ = ("path", "formulas", "distinct_objects")
+
+    def __init__(
+        self,
+        path: str,
+        formulas: tuple[TptpFormula, ...],
+        distinct_objects: tuple[str, ...] = (),
+    ) -> None:
+        self.path = path
+        self.formulas = formulas
+        self.distinct_objects = distinct_objects
 
     @property
     def name(self) -> str:
@@ -539,15 +552,26 @@ def szs_status(problem: TptpProblem, result: ProofResult) -> str:
 ANSWER_SEARCH_FACTOR = 8
 
 
-@frozen
-class TptpOutcome:
+class TptpOutcome(Record):
     """What :func:`prove_tptp` found: the SZS status, the answer tuples (``None`` when
     there are none) and each proof attempt made, named (``problem``, ``question`` with
     answer literals, or ``conjecture`` then ``answer search`` with parameters)."""
 
     status: str
-    answers: str | None = None
-    attempts: tuple[tuple[str, ProofResult], ...] = ()
+    answers: str | None
+    attempts: tuple[tuple[str, ProofResult], ...]
+
+    __slots__ = ("status", "answers", "attempts")
+
+    def __init__(
+        self,
+        status: str,
+        answers: str | None = None,
+        attempts: tuple[tuple[str, ProofResult], ...] = (),
+    ) -> None:
+        self.status = status
+        self.answers = answers
+        self.attempts = attempts
 
     @property
     def effort_used(self) -> int:

@@ -18,7 +18,7 @@ Determinism: facts are numbered in the order of their names and operators sorted
 from __future__ import annotations
 
 from collections.abc import Callable
-from operator import itemgetter
+from operator import attrgetter, itemgetter
 
 from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
@@ -34,6 +34,8 @@ from strips_framework.records import Record
 GOAL = "@goal"
 #: Prefix of the predicate that says an action applies, premise of its effects' rules.
 APPLICABLE = "@applicable:"
+#: The grounder's records sort by their key (their fields in sorting order).
+_KEY = attrgetter("key")
 
 Fact = tuple[str, Args]
 #: An atom compiled against a rule's slots: the fact numbers of its predicate by
@@ -239,7 +241,7 @@ class _Grounder:
                 operators.update(builder.operators(instances, effects.get(source.action.name, {})))
             elif source.head is not None:
                 axioms.update(builder.axioms(instances, strata[source.head.predicate]))
-        return sorted(operators), sorted(axioms)
+        return sorted(operators, key=_KEY), sorted(axioms, key=_KEY)
 
     def _goal_facts(self) -> set[Fact]:
         """The goal's atoms, static ones that hold left out. A goal fact nothing reaches
@@ -441,7 +443,7 @@ def _simplify(
         effect_delete -= add | delete | effect_add
         if effect_add or effect_delete:
             result.add(_raw_effect(condition, condition_neg, effect_add, effect_delete))
-    return tuple(sorted(result))
+    return tuple(sorted(result, key=_KEY))
 
 
 def _raw_effect(

@@ -16,10 +16,33 @@ operators are built once.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import NamedTuple
+
+from strips_framework.records import Record
 
 
-class RawEffect(NamedTuple):
+class _Keyed(Record):
+    """A record that compares and hashes by ``key``, its fields as one tuple in the order
+    records are sorted (the grounder sorts them with ``key=attrgetter("key")``). The key
+    and its hash are computed once: the grounder puts hundreds of thousands of these in
+    sets and sorts them, which plain tuple comparisons keep cheap."""
+
+    key: tuple
+    _hash: int
+
+    __slots__ = ("key", "_hash")
+
+    def _keyed(self, key: tuple) -> None:
+        self.key = key
+        self._hash = hash(key)
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is type(self) and other.key == self.key  # type: ignore[attr-defined]
+
+    def __hash__(self) -> int:
+        return self._hash
+
+
+class RawEffect(_Keyed):
     """A conditional effect before the final numbering."""
 
     condition: tuple[int, ...]
@@ -27,10 +50,25 @@ class RawEffect(NamedTuple):
     add: tuple[int, ...]
     delete: tuple[int, ...]
 
+    __slots__ = ("condition", "condition_neg", "add", "delete")
 
-class RawOperator(NamedTuple):
-    """A ground operator before the final numbering (a tuple, so records sort and hash
-    cheaply; fields in the order operators are sorted)."""
+    def __init__(
+        self,
+        condition: tuple[int, ...],
+        condition_neg: tuple[int, ...],
+        add: tuple[int, ...],
+        delete: tuple[int, ...],
+    ) -> None:
+        self.condition = condition
+        self.condition_neg = condition_neg
+        self.add = add
+        self.delete = delete
+        self._keyed((condition, condition_neg, add, delete))
+
+
+class RawOperator(_Keyed):
+    """A ground operator before the final numbering (fields in the order operators are
+    sorted)."""
 
     name: str
     pre: tuple[int, ...]
@@ -38,16 +76,48 @@ class RawOperator(NamedTuple):
     add: tuple[int, ...]
     delete: tuple[int, ...]
     cost: int
-    effects: tuple[RawEffect, ...] = ()
+    effects: tuple[RawEffect, ...]
+
+    __slots__ = ("name", "pre", "pre_neg", "add", "delete", "cost", "effects")
+
+    def __init__(
+        self,
+        name: str,
+        pre: tuple[int, ...],
+        pre_neg: tuple[int, ...],
+        add: tuple[int, ...],
+        delete: tuple[int, ...],
+        cost: int,
+        effects: tuple[RawEffect, ...] = (),
+    ) -> None:
+        self.name = name
+        self.pre = pre
+        self.pre_neg = pre_neg
+        self.add = add
+        self.delete = delete
+        self.cost = cost
+        self.effects = effects
+        self._keyed((name, pre, pre_neg, add, delete, cost, tuple([e.key for e in effects])))
 
 
-class RawAxiom(NamedTuple):
+class RawAxiom(_Keyed):
     """A ground axiom before the final numbering, fields in sorting order."""
 
     stratum: int
     head: int
     body: tuple[int, ...]
     body_neg: tuple[int, ...]
+
+    __slots__ = ("stratum", "head", "body", "body_neg")
+
+    def __init__(
+        self, stratum: int, head: int, body: tuple[int, ...], body_neg: tuple[int, ...]
+    ) -> None:
+        self.stratum = stratum
+        self.head = head
+        self.body = body
+        self.body_neg = body_neg
+        self._keyed((stratum, head, body, body_neg))
 
 
 def relevant(

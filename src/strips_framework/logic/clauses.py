@@ -10,32 +10,56 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from attrs import field, frozen
-
 from strips_framework.logic.terms import Atom, Param, Term, atom_to_str, term_to_str
+from strips_framework.records import Record
 
 Literal = tuple[bool, Atom]
-
-
-def _literal_tuple(items: Iterable[Literal]) -> tuple[Literal, ...]:
-    return tuple(items)
 
 
 def _binding_tuple(items: Iterable[tuple[Param, Term]]) -> tuple[tuple[Param, Term], ...]:
     return tuple(sorted(items, key=lambda pair: (pair[0].name, pair[0].tag)))
 
 
-@frozen(cache_hash=True)
-class Clause:
+class Clause(Record):
     """A disjunction of literals; the empty clause is a contradiction.
 
     ``bindings`` are the parameter bindings made on the way to this clause (answer
     extraction); ``label`` says where an input clause came from, for proofs and errors.
+    Two clauses are equal when their literals and bindings are (the label is not
+    compared); the prover hashes clauses often, so the hash is computed once.
     """
 
-    literals: tuple[Literal, ...] = field(converter=_literal_tuple)
-    bindings: tuple[tuple[Param, Term], ...] = field(default=(), converter=_binding_tuple)
-    label: str = field(default="", eq=False)
+    literals: tuple[Literal, ...]
+    bindings: tuple[tuple[Param, Term], ...]
+    label: str
+
+    FIELDS = ("literals", "bindings", "label")
+    __slots__ = ("literals", "bindings", "label", "_hash")
+
+    def __init__(
+        self,
+        literals: Iterable[Literal],
+        bindings: Iterable[tuple[Param, Term]] = (),
+        label: str = "",
+    ) -> None:
+        self.literals = tuple(literals)
+        self.bindings = _binding_tuple(bindings)
+        self.label = label
+        self._hash = hash(("Clause", self.literals, self.bindings))
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            type(other) is Clause
+            and other.literals == self.literals
+            and other.bindings == self.bindings
+        )
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __reduce__(self) -> tuple[type[Clause], tuple[object, ...]]:
+        # Rebuilt from its fields: a string's hash differs between processes.
+        return (Clause, (self.literals, self.bindings, self.label))
 
     @property
     def is_empty(self) -> bool:

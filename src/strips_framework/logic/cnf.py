@@ -30,8 +30,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from math import prod
 
-from attrs import define
-
 from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.formulas import (
     And,
@@ -60,15 +58,18 @@ _Clause = tuple[Literal, ...]
 _Cnf = list[_Clause]  # a conjunction of clauses; [] is true, [()] is false
 
 
-@define
 class SkolemNames:
     """Hands out fresh Skolem and definition symbols: ``sk!1``, ``sk!2``, ``def!3``, ...
 
     Use one instance per problem (world model, axioms, operator preconditions, goals), so
-    two clausified formulas never share a Skolem function by accident.
+    two clausified formulas never share a Skolem function by accident. Mutable: ``count``
+    is the number of symbols handed out so far.
     """
 
-    count: int = 0
+    __slots__ = ("count",)
+
+    def __init__(self, count: int = 0) -> None:
+        self.count = count
 
     def fresh(self) -> str:
         """A new Skolem function or constant name."""

@@ -7,78 +7,127 @@ Constants, parameters and function terms are the values of ``terms``.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
-
-from attrs import field, frozen
+from collections.abc import Iterable, Iterator, Mapping
 
 from strips_framework.logic.terms import EQUALITY, Param, Term
+from strips_framework.records import Record
 
 
-@frozen
-class Var:
+class Var(Record):
     """A quantified variable inside a formula, such as ``x`` in ``exists x: AT(BOX1, x)``."""
 
     name: str
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str) -> None:
+        self.name = name
 
     def __str__(self) -> str:
         return self.name
 
 
-def _tuple(items: object) -> tuple:
-    return tuple(items)  # type: ignore[arg-type]
-
-
-@frozen
-class Atomic:
+class Atomic(Record):
     """An atom ``(predicate, *args)`` used as a formula; ``("=", s, t)`` is equality."""
 
     atom: tuple
 
+    __slots__ = ("atom",)
 
-@frozen
-class Truth:
+    def __init__(self, atom: tuple) -> None:
+        self.atom = atom
+
+
+class Truth(Record):
     """The constants ``true`` and ``false``."""
 
     value: bool
 
+    __slots__ = ("value",)
 
-@frozen
-class Not:
+    def __init__(self, value: bool) -> None:
+        self.value = value
+
+
+class Not(Record):
     body: Formula
 
+    __slots__ = ("body",)
 
-@frozen
-class And:
-    parts: tuple[Formula, ...] = field(converter=_tuple)
-
-
-@frozen
-class Or:
-    parts: tuple[Formula, ...] = field(converter=_tuple)
+    def __init__(self, body: Formula) -> None:
+        self.body = body
 
 
-@frozen
-class Implies:
+class _Connective(Record):
+    """The fields of :class:`And` and :class:`Or`; ``parts`` may be any iterable (kept as
+    a tuple). Records compare by type, so a conjunction never equals a disjunction."""
+
+    parts: tuple[Formula, ...]
+
+    __slots__ = ("parts",)
+
+    def __init__(self, parts: Iterable[Formula]) -> None:
+        self.parts = tuple(parts)
+
+
+class And(_Connective):
+    """A conjunction."""
+
+    __slots__ = ()
+
+
+class Or(_Connective):
+    """A disjunction."""
+
+    __slots__ = ()
+
+
+class Implies(Record):
     premise: Formula
     conclusion: Formula
 
+    __slots__ = ("premise", "conclusion")
 
-@frozen
-class Iff:
+    def __init__(self, premise: Formula, conclusion: Formula) -> None:
+        self.premise = premise
+        self.conclusion = conclusion
+
+
+class Iff(Record):
     left: Formula
     right: Formula
 
+    __slots__ = ("left", "right")
 
-@frozen
-class Forall:
-    variables: tuple[Var, ...] = field(converter=_tuple)
-    body: Formula = field()
+    def __init__(self, left: Formula, right: Formula) -> None:
+        self.left = left
+        self.right = right
 
 
-@frozen
-class Exists:
-    variables: tuple[Var, ...] = field(converter=_tuple)
-    body: Formula = field()
+class _Quantified(Record):
+    """The fields of :class:`Forall` and :class:`Exists`; ``variables`` may be any
+    iterable (kept as a tuple)."""
+
+    variables: tuple[Var, ...]
+    body: Formula
+
+    __slots__ = ("variables", "body")
+
+    def __init__(self, variables: Iterable[Var], body: Formula) -> None:
+        self.variables = tuple(variables)
+        self.body = body
+
+
+class Forall(_Quantified):
+    """``forall x, y: body``."""
+
+    __slots__ = ()
+
+
+class Exists(_Quantified):
+    """``exists x, y: body``."""
+
+    __slots__ = ()
 
 
 Formula = Atomic | Truth | Not | And | Or | Implies | Iff | Forall | Exists

@@ -36,9 +36,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection, Iterable, Mapping
-from typing import NamedTuple
-
-from attrs import define, field
 
 from strips_framework.errors import InputError
 from strips_framework.logic.formulas import (
@@ -55,6 +52,7 @@ from strips_framework.logic.formulas import (
     Var,
 )
 from strips_framework.logic.terms import EQUALITY, WILDCARD, Atom, Param, Term
+from strips_framework.records import Record
 from strips_framework.user_files import MAX_NESTING
 
 _TOKEN = re.compile(
@@ -72,14 +70,22 @@ _TOKEN = re.compile(
 _KEYWORDS = {"not": "NOT", "forall": "FORALL", "exists": "EXISTS", "true": "TRUE", "false": "FALSE"}
 
 
-class Token(NamedTuple):
-    """One lexeme with its 1-based position in the whole file (a named tuple: a large
+class Token(Record):
+    """One lexeme with its 1-based position in the whole file (a slotted record: a large
     world has hundreds of thousands)."""
 
     kind: str
     text: str
     line: int
     column: int
+
+    __slots__ = ("kind", "text", "line", "column")
+
+    def __init__(self, kind: str, text: str, line: int, column: int) -> None:
+        self.kind = kind
+        self.text = text
+        self.line = line
+        self.column = column
 
 
 def tokenize(
@@ -117,15 +123,18 @@ def tokenize(
     return tokens
 
 
-@define
 class Arities:
     """The arity of each predicate, fixed by a declaration or else by its first use.
 
     One instance per file makes "AT has two arguments everywhere" a single check, and
-    lets the message say where the arity was fixed.
+    lets the message say where the arity was fixed. Mutable: :meth:`fix` and
+    :meth:`check` extend ``fixed``.
     """
 
-    fixed: dict[str, tuple[int, str]] = field(factory=dict)
+    __slots__ = ("fixed",)
+
+    def __init__(self, fixed: dict[str, tuple[int, str]] | None = None) -> None:
+        self.fixed: dict[str, tuple[int, str]] = {} if fixed is None else fixed
 
     @classmethod
     def declared(cls, arities: Mapping[str, int]) -> Arities:

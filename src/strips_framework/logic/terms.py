@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from attrs import frozen
+from strips_framework.records import Record
 
 #: Skolem symbols start with this prefix; no name a user can write does (``!`` is not
 #: allowed in identifiers), so Skolem terms are told apart without a lookup.
@@ -37,16 +37,45 @@ ANSWER = "$answer"
 WILDCARD = "$"
 
 
-@frozen(order=True, cache_hash=True)
-class Param:
+class Param(Record):
     """An operator-schema parameter such as ``m`` in ``goto(m, n)``.
 
     ``tag`` tells apart two instances of the same schema (or two schemata that both name a
-    parameter ``m``) inside one proof; it is never shown to users.
+    parameter ``m``) inside one proof; it is never shown to users. Parameters are ordered
+    by name, then tag. The prover hashes and compares them in its inner loops, so the hash
+    is computed once and equality is written out.
     """
 
     name: str
-    tag: int = 0
+    tag: int
+
+    FIELDS = ("name", "tag")
+    __slots__ = ("name", "tag", "_hash")
+
+    def __init__(self, name: str, tag: int = 0) -> None:
+        self.name = name
+        self.tag = tag
+        self._hash = hash(("Param", name, tag))
+
+    def __eq__(self, other: object) -> bool:
+        return type(other) is Param and other.name == self.name and other.tag == self.tag
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __lt__(self, other: Param) -> bool:
+        if type(other) is not Param:
+            return NotImplemented
+        return (self.name, self.tag) < (other.name, other.tag)
+
+    def __le__(self, other: Param) -> bool:
+        if type(other) is not Param:
+            return NotImplemented
+        return (self.name, self.tag) <= (other.name, other.tag)
+
+    def __reduce__(self) -> tuple[type[Param], tuple[str, int]]:
+        # Rebuilt from its fields: a string's hash differs between processes.
+        return (Param, (self.name, self.tag))
 
     def __str__(self) -> str:
         return self.name

@@ -22,24 +22,28 @@ from __future__ import annotations
 
 import itertools
 
-from attrs import frozen
-
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Or
 from strips_framework.logic.terms import WILDCARD, Atom, Param, Term
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.macrops.ground_table import GroundTable
 from strips_framework.macrops.proofs import DERIVED, FACT, Derivation, MacroError, Witness
 from strips_framework.macrops.table import Cell, Distinct, Step, TriangleTable
+from strips_framework.records import Record
 from strips_framework.worldmodel.simulate import Simulator, ground_term
 
 
-@frozen
-class Generalized:
+class Generalized(Record):
     """A generalized table and the binding of its parameters that gives back the plan it
     was learned from."""
 
     table: TriangleTable
     example: dict[Param, Term]
+
+    __slots__ = ("table", "example")
+
+    def __init__(self, table: TriangleTable, example: dict[Param, Term]) -> None:
+        self.table = table
+        self.example = example
 
 
 class _Lifter:

@@ -10,19 +10,17 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from attrs import frozen
-
 from strips_framework.logic.terms import Atom, Param, Term
 from strips_framework.macrops.proofs import Justifier, MacroError, Witness
 from strips_framework.macrops.table import Cell, Step, TriangleTable
+from strips_framework.records import Record
 from strips_framework.result import Result
 from strips_framework.worldmodel.operators import OperatorInstance
 from strips_framework.worldmodel.problem import Problem
 from strips_framework.worldmodel.simulate import Simulator, State
 
 
-@frozen
-class GroundTable:
+class GroundTable(Record):
     """A plan's :class:`TriangleTable` and, per row 1 .. n+1, the proof of its condition
     and the column each of the proof's facts came from."""
 
@@ -30,6 +28,20 @@ class GroundTable:
     table: TriangleTable
     proofs: tuple[Witness, ...]
     origins: tuple[dict[Atom, int], ...]
+
+    __slots__ = ("problem", "table", "proofs", "origins")
+
+    def __init__(
+        self,
+        problem: Problem,
+        table: TriangleTable,
+        proofs: tuple[Witness, ...],
+        origins: tuple[dict[Atom, int], ...],
+    ) -> None:
+        self.problem = problem
+        self.table = table
+        self.proofs = proofs
+        self.origins = origins
 
 
 def parse_plan(problem: Problem, plan: Sequence[str]) -> list[Step]:

@@ -30,8 +30,6 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
-from attrs import define, field
-
 from strips_framework.errors import InputError
 from strips_framework.logic.formulas import formula_to_str
 from strips_framework.logic.parser import WffParser, tokenize
@@ -109,17 +107,33 @@ _COLON = "__colon__"
 _ENTRIES = ("learned-from", "parameters", "step", "row", "unmarked", "distinct", "example")
 
 
-@define
 class _Draft:
-    name: str
-    line: int
-    learned_from: str = ""
-    parameters: tuple[str, ...] | None = None
-    steps: list[Step] = field(factory=list)
-    marked: dict[Cell, tuple[Atom, ...]] = field(factory=dict)
-    unmarked: dict[Cell, tuple[Atom, ...]] = field(factory=dict)
-    distinct: list[Distinct] = field(factory=list)
-    example: dict[Param, Term] = field(factory=dict)
+    """A MACROP being read from a library file: mutable, filled in entry by entry."""
+
+    __slots__ = ("name", "line", "learned_from", "parameters", "steps", "marked", "unmarked",
+                 "distinct", "example")  # fmt: skip
+
+    def __init__(
+        self,
+        name: str,
+        line: int,
+        learned_from: str = "",
+        parameters: tuple[str, ...] | None = None,
+        steps: list[Step] | None = None,
+        marked: dict[Cell, tuple[Atom, ...]] | None = None,
+        unmarked: dict[Cell, tuple[Atom, ...]] | None = None,
+        distinct: list[Distinct] | None = None,
+        example: dict[Param, Term] | None = None,
+    ) -> None:
+        self.name: str = name
+        self.line: int = line
+        self.learned_from: str = learned_from
+        self.parameters: tuple[str, ...] | None = parameters
+        self.steps: list[Step] = [] if steps is None else steps
+        self.marked: dict[Cell, tuple[Atom, ...]] = {} if marked is None else marked
+        self.unmarked: dict[Cell, tuple[Atom, ...]] = {} if unmarked is None else unmarked
+        self.distinct: list[Distinct] = [] if distinct is None else distinct
+        self.example: dict[Param, Term] = {} if example is None else example
 
 
 class _Reader:

@@ -10,24 +10,37 @@ Distinct constraints is one of A's or cannot fail).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
-
-from attrs import field, frozen
+from collections.abc import Iterable, Iterator
 
 from strips_framework.logic.terms import Param, Term
 from strips_framework.macrops.table import TriangleTable
+from strips_framework.records import Record
 from strips_framework.worldmodel.simulate import ground_term
 
 
-@frozen
-class Macrop:
+class Macrop(Record):
     """A named generalized plan; ``learned_from`` names the problem it was learned on and
     ``example`` the binding that gives back that plan."""
 
     name: str
     table: TriangleTable
-    learned_from: str = ""
-    example: dict[Param, Term] = field(factory=dict, eq=False)
+    learned_from: str
+    example: dict[Param, Term]
+
+    __slots__ = ("name", "table", "learned_from", "example")
+    COMPARED = ("name", "table", "learned_from")
+
+    def __init__(
+        self,
+        name: str,
+        table: TriangleTable,
+        learned_from: str = "",
+        example: dict[Param, Term] | None = None,
+    ) -> None:
+        self.name = name
+        self.table = table
+        self.learned_from = learned_from
+        self.example = {} if example is None else example
 
     def parts(self) -> Iterator[tuple[str, TriangleTable]]:
         """The whole table, then each edited part that differs from it, with names
@@ -92,11 +105,15 @@ def _match_param(pattern: Term, target: Term, subst: dict) -> dict | None:
     return subst if pattern == target else None
 
 
-@frozen
-class Library:
+class Library(Record):
     """MACROPs in the order they were learned."""
 
-    macrops: tuple[Macrop, ...] = field(default=(), converter=tuple)
+    macrops: tuple[Macrop, ...]
+
+    __slots__ = ("macrops",)
+
+    def __init__(self, macrops: Iterable[Macrop] = ()) -> None:
+        self.macrops = tuple(macrops)
 
     def added(self, new: Macrop) -> tuple[Library, str]:
         """The library with ``new`` in it, unless another MACROP subsumes it (then the

@@ -19,14 +19,12 @@ from __future__ import annotations
 import random
 from collections.abc import Callable, Sequence
 
-import attrs
-from attrs import frozen
-
 from strips_framework.macrops.ground_table import ground_table
 from strips_framework.macrops.kernels import holds
 from strips_framework.macrops.proofs import MacroError
 from strips_framework.macrops.table import Step, TriangleTable
 from strips_framework.options import Configurable, Option
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import Problem
 from strips_framework.worldmodel.simulate import Simulator, State
 
@@ -48,16 +46,20 @@ class FaultModel(Configurable):
     max_replans: int
 
 
-@frozen
-class Event:
+class Event(Record):
     """One line of the execution report."""
 
     step: int
     text: str
 
+    __slots__ = ("step", "text")
 
-@frozen
-class Execution:
+    def __init__(self, step: int, text: str) -> None:
+        self.step = step
+        self.text = text
+
+
+class Execution(Record):
     """What happened in one run."""
 
     reached: bool
@@ -68,6 +70,29 @@ class Execution:
     redone: int
     replans: int
     events: tuple[Event, ...]
+
+    __slots__ = ("reached", "actions", "failures", "disturbances", "skipped", "redone", "replans",
+                 "events")  # fmt: skip
+
+    def __init__(
+        self,
+        reached: bool,
+        actions: int,
+        failures: int,
+        disturbances: int,
+        skipped: int,
+        redone: int,
+        replans: int,
+        events: tuple[Event, ...],
+    ) -> None:
+        self.reached = reached
+        self.actions = actions
+        self.failures = failures
+        self.disturbances = disturbances
+        self.skipped = skipped
+        self.redone = redone
+        self.replans = replans
+        self.events = events
 
 
 #: A planner from a problem (the world as it is now, as a problem) to a plan, or None.
@@ -105,7 +130,7 @@ def execute(
                                     "made already: giving up"))
                 break
             counts["replans"] += 1
-            current = attrs.evolve(problem, facts=tuple(sorted(state, key=repr)))
+            current = problem._replace(facts=tuple(sorted(state, key=repr)))
             plan = replan(current)
             if plan is None:
                 events.append(Event(clock, "no kernel holds and replanning found no plan"))
@@ -164,8 +189,7 @@ def _disturb(
     return None
 
 
-@frozen
-class Summary:
+class Summary(Record):
     """``runs`` executions of one task."""
 
     runs: int
@@ -176,6 +200,29 @@ class Summary:
     skipped: float
     redone: float
     replans: float
+
+    __slots__ = ("runs", "reached", "actions", "failures", "disturbances", "skipped", "redone",
+                 "replans")  # fmt: skip
+
+    def __init__(
+        self,
+        runs: int,
+        reached: int,
+        actions: float,
+        failures: float,
+        disturbances: float,
+        skipped: float,
+        redone: float,
+        replans: float,
+    ) -> None:
+        self.runs = runs
+        self.reached = reached
+        self.actions = actions
+        self.failures = failures
+        self.disturbances = disturbances
+        self.skipped = skipped
+        self.redone = redone
+        self.replans = replans
 
     @classmethod
     def of(cls, executions: Sequence[Execution]) -> Summary:

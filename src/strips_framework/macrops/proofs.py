@@ -21,8 +21,6 @@ import itertools
 from collections import defaultdict
 from collections.abc import Iterator
 
-from attrs import frozen
-
 from strips_framework.errors import StripsError
 from strips_framework.logic.formulas import (
     And,
@@ -36,6 +34,7 @@ from strips_framework.logic.formulas import (
     formula_to_str,
 )
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term
+from strips_framework.records import Record
 from strips_framework.worldmodel.simulate import Env, Simulator, State, body_matches, ground_term
 
 FACT, DERIVED, RULE = "fact", "derived", "rule"
@@ -45,8 +44,7 @@ class MacroError(StripsError):
     """A plan, table or library that the MACROP machinery cannot use, and why."""
 
 
-@frozen
-class Derivation:
+class Derivation(Record):
     """How the ground ``atom`` follows from a state.
 
     ``kind`` is :data:`FACT` (a leaf), :data:`DERIVED` (``children`` are the supports) or
@@ -56,10 +54,28 @@ class Derivation:
 
     atom: Atom
     kind: str
-    children: tuple[Derivation, ...] = ()
-    rule: int = -1
-    head: int = -1
-    env: tuple[tuple[Var, Term], ...] = ()
+    children: tuple[Derivation, ...]
+    rule: int
+    head: int
+    env: tuple[tuple[Var, Term], ...]
+
+    __slots__ = ("atom", "kind", "children", "rule", "head", "env")
+
+    def __init__(
+        self,
+        atom: Atom,
+        kind: str,
+        children: tuple[Derivation, ...] = (),
+        rule: int = -1,
+        head: int = -1,
+        env: tuple[tuple[Var, Term], ...] = (),
+    ) -> None:
+        self.atom = atom
+        self.kind = kind
+        self.children = children
+        self.rule = rule
+        self.head = head
+        self.env = env
 
     def leaves(self) -> Iterator[Derivation]:
         if self.kind == FACT:
@@ -68,22 +84,32 @@ class Derivation:
             yield from child.leaves()
 
 
-@frozen
-class Needed:
+class Needed(Record):
     """One atom occurrence of a precondition (the ``Atomic`` node ``where``) and its proof."""
 
     where: Atomic
     proof: Derivation
 
+    __slots__ = ("where", "proof")
 
-@frozen
-class Witness:
+    def __init__(self, where: Atomic, proof: Derivation) -> None:
+        self.where = where
+        self.proof = proof
+
+
+class Witness(Record):
     """A proof of a precondition: the atom occurrences it needed, with their proofs, and
     the equality atoms whose negation it tested (``Atomic`` nodes of the formula, told
     apart by identity, so that generalization can lift them in their own scope)."""
 
     needed: tuple[Needed, ...]
     unequal: tuple[Atomic, ...]
+
+    __slots__ = ("needed", "unequal")
+
+    def __init__(self, needed: tuple[Needed, ...], unequal: tuple[Atomic, ...]) -> None:
+        self.needed = needed
+        self.unequal = unequal
 
 
 class Justifier:

@@ -15,10 +15,8 @@ the whole sequence, all of its steps in the plan.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Sequence
-from typing import ClassVar
-
-from attrs import field, frozen
+from collections.abc import Iterable, Sequence
+from typing import Any, ClassVar
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Formula
@@ -30,17 +28,26 @@ from strips_framework.macrops.table import TriangleTable
 from strips_framework.means_ends.components import ProblemRelevance, RelevanceFilter
 from strips_framework.means_ends.node import Difference, RelevantInstance
 from strips_framework.options import Configurable, Option
+from strips_framework.records import Record
 from strips_framework.worldmodel.operators import OperatorInstance
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.simulate import State
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 
-@frozen
 class MacroSchema(OperatorSchema):
-    """A MACROP (or an edited part of one) as an operator schema."""
+    """A MACROP (or an edited part of one) as an operator schema; the ``table`` is not
+    compared."""
 
-    table: TriangleTable | None = field(default=None, eq=False, repr=False)
+    table: TriangleTable | None
+
+    FIELDS = (*OperatorSchema.FIELDS, "table")
+    COMPARED = OperatorSchema.COMPARED
+    __slots__ = ("table",)
+
+    def __init__(self, table: TriangleTable | None = None, **schema: Any) -> None:
+        super().__init__(**schema)
+        self.table = table
 
 
 def macro_schema(name: str, table: TriangleTable) -> MacroSchema:
@@ -60,9 +67,10 @@ def macro_schema(name: str, table: TriangleTable) -> MacroSchema:
     )
 
 
-@frozen(cache_hash=True)
 class MacroInstance(OperatorInstance):
     """An instance of a :class:`MacroSchema`: applied, it applies its table's steps."""
+
+    __slots__ = ()
 
     def bind(self, more: dict[Param, Term]) -> MacroInstance:
         bound = super().bind(more)
@@ -121,8 +129,7 @@ class MacroUse(Configurable):
     effort: int
 
 
-@frozen
-class MacroRelevance:
+class MacroRelevance(Record):
     """The configured relevance filter, asked about the operators and the library's
     macro operators together. The inner filter's order is kept (closest to a proof,
     least harm first), except that among instances that leave equally much of the proof,
@@ -130,8 +137,17 @@ class MacroRelevance:
 
     name: ClassVar[str] = "macrops"
     inner: RelevanceFilter
-    schemas: tuple[MacroSchema, ...] = field(converter=tuple)
-    use: MacroUse = MacroUse()
+    schemas: tuple[MacroSchema, ...]
+    use: MacroUse
+
+    __slots__ = ("inner", "schemas", "use")
+
+    def __init__(
+        self, inner: RelevanceFilter, schemas: Iterable[MacroSchema], use: MacroUse | None = None
+    ) -> None:
+        self.inner = inner
+        self.schemas = tuple(schemas)
+        self.use = MacroUse() if use is None else use
 
     @classmethod
     def of(cls, inner: RelevanceFilter, library: Library, use: MacroUse | None = None) -> MacroRelevance:
@@ -145,12 +161,17 @@ class MacroRelevance:
         return PreparedMacroRelevance(self, self.inner.for_problem([*operators, *self.schemas], initial))
 
 
-@frozen
-class PreparedMacroRelevance:
+class PreparedMacroRelevance(Record):
     """:class:`MacroRelevance` for one problem."""
 
     macros: MacroRelevance
     inner: ProblemRelevance
+
+    __slots__ = ("macros", "inner")
+
+    def __init__(self, macros: MacroRelevance, inner: ProblemRelevance) -> None:
+        self.macros = macros
+        self.inner = inner
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         use = self.macros.use

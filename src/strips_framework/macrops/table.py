@@ -16,21 +16,25 @@ later steps need).
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
-
-from attrs import field, frozen
+from collections.abc import Iterable, Iterator, Sequence
 
 from strips_framework.logic.terms import Atom, Param, Term, term_to_str
 from strips_framework.logic.unify import substitute
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import OperatorSchema
 
 
-@frozen
-class Step:
+class Step(Record):
     """One operator of a table: the schema and its arguments (constants or parameters)."""
 
     schema: OperatorSchema
-    arguments: tuple[Term, ...] = field(converter=tuple)
+    arguments: tuple[Term, ...]
+
+    __slots__ = ("schema", "arguments")
+
+    def __init__(self, schema: OperatorSchema, arguments: Iterable[Term]) -> None:
+        self.schema = schema
+        self.arguments = tuple(arguments)
 
     def binding(self) -> dict[Param, Term]:
         return dict(zip(self.schema.parameters, self.arguments))
@@ -51,8 +55,7 @@ class Step:
         return f"{self.schema.name}({', '.join(map(term_to_str, self.arguments))})"
 
 
-@frozen
-class Distinct:
+class Distinct(Record):
     """``left`` and ``right`` must differ, or step ``step`` deletes a clause row ``row``
     needs (two parameters of a generalized plan bound to one object)."""
 
@@ -61,6 +64,14 @@ class Distinct:
     row: int
     step: int
 
+    __slots__ = ("left", "right", "row", "step")
+
+    def __init__(self, left: Term, right: Term, row: int, step: int) -> None:
+        self.left = left
+        self.right = right
+        self.row = row
+        self.step = step
+
     def holds(self, binding: dict) -> bool:
         return substitute(self.left, binding) != substitute(self.right, binding)
 
@@ -68,15 +79,28 @@ class Distinct:
 Cell = tuple[int, int]
 
 
-@frozen
-class TriangleTable:
+class TriangleTable(Record):
     """``marked[(r, c)]`` are the supporting clauses of cell (r, c); ``unmarked[(r, c)]``
     the other clauses op_c added that still hold at row r (shown, never required)."""
 
-    steps: tuple[Step, ...] = field(converter=tuple)
-    marked: dict[Cell, tuple[Atom, ...]] = field(factory=dict)
-    unmarked: dict[Cell, tuple[Atom, ...]] = field(factory=dict)
-    distinct: tuple[Distinct, ...] = field(default=(), converter=tuple)
+    steps: tuple[Step, ...]
+    marked: dict[Cell, tuple[Atom, ...]]
+    unmarked: dict[Cell, tuple[Atom, ...]]
+    distinct: tuple[Distinct, ...]
+
+    __slots__ = ("steps", "marked", "unmarked", "distinct")
+
+    def __init__(
+        self,
+        steps: Iterable[Step],
+        marked: dict[Cell, tuple[Atom, ...]] | None = None,
+        unmarked: dict[Cell, tuple[Atom, ...]] | None = None,
+        distinct: Iterable[Distinct] = (),
+    ) -> None:
+        self.steps = tuple(steps)
+        self.marked = {} if marked is None else marked
+        self.unmarked = {} if unmarked is None else unmarked
+        self.distinct = tuple(distinct)
 
     @property
     def size(self) -> int:

@@ -7,8 +7,6 @@ from __future__ import annotations
 
 import time
 
-from attrs import define, field
-
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, negated_goal_clauses
 from strips_framework.logic.formulas import Formula
@@ -22,24 +20,37 @@ from strips_framework.worldmodel.proving import (
 from strips_framework.worldmodel.world import InitialModel, WorldModel, initial_model
 
 
-@define
 class GoalProver:
-    """One search's access to the prover."""
+    """One search's access to the prover. Mutable: it counts the attempts and the time
+    spent proving, and caches clause forms and answers."""
 
-    problem: Problem
-    prover: TheoremProver
-    effort: int
-    skolem: SkolemNames = field(factory=SkolemNames)
-    initial: InitialModel = field(init=False)
-    session: ProverSession = field(init=False)
-    seconds: float = 0.0
-    attempts: int = 0
-    _negations: dict[Formula, tuple[Clause, ...]] = field(factory=dict)
-    _cache: dict[tuple[WorldModel, Formula, int], ProofResult] = field(factory=dict)
+    __slots__ = ("problem", "prover", "effort", "skolem", "initial", "session", "seconds",
+                 "attempts", "_negations", "_cache")  # fmt: skip
 
-    def __attrs_post_init__(self) -> None:
-        self.initial = initial_model(self.problem, self.skolem)
-        self.session = open_session(self.prover, self.initial, self.problem.unique_names)
+    def __init__(
+        self,
+        problem: Problem,
+        prover: TheoremProver,
+        effort: int,
+        skolem: SkolemNames | None = None,
+    ) -> None:
+        self.problem = problem
+        self.prover = prover
+        self.effort = effort
+        self.skolem = SkolemNames() if skolem is None else skolem
+        self.seconds = 0.0
+        self.attempts = 0
+        self._negations: dict[Formula, tuple[Clause, ...]] = {}
+        self._cache: dict[tuple[WorldModel, Formula, int], ProofResult] = {}
+        self._open()
+
+    def _open(self) -> None:
+        """Build M0 and open the prover's session on it (a method of its own, so that a
+        benchmark can wrap it to time or record the session)."""
+        self.initial: InitialModel = initial_model(self.problem, self.skolem)
+        self.session: ProverSession = open_session(
+            self.prover, self.initial, self.problem.unique_names
+        )
 
     def root_model(self) -> WorldModel:
         return WorldModel(self.initial)

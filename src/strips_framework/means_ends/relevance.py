@@ -21,8 +21,6 @@ from functools import cache
 from collections.abc import Iterator, Sequence
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Var, conjuncts
 from strips_framework.logic.terms import (
@@ -37,6 +35,7 @@ from strips_framework.logic.terms import (
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
 from strips_framework.options import Configurable, Option
+from strips_framework.records import Record
 from strips_framework.worldmodel.operators import OperatorInstance, may_delete
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
@@ -93,16 +92,29 @@ class AddListRelevance(Configurable):
         )
 
 
-@frozen
-class AddListIndex:
+class AddListIndex(Record):
     """:class:`AddListRelevance` for one problem: candidates by the predicate they add,
     and the rigid predicates of its M0 (only deleted, never added or concluded, so a
     model's rigid facts are M0's less its deletions)."""
 
     by_predicate: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]
     rigid: frozenset[tuple[str, int]]
-    concluded: frozenset[tuple[str, int]] = frozenset()
-    by_cost: bool = False
+    concluded: frozenset[tuple[str, int]]
+    by_cost: bool
+
+    __slots__ = ("by_predicate", "rigid", "concluded", "by_cost")
+
+    def __init__(
+        self,
+        by_predicate: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]],
+        rigid: frozenset[tuple[str, int]],
+        concluded: frozenset[tuple[str, int]] = frozenset(),
+        by_cost: bool = False,
+    ) -> None:
+        self.by_predicate = by_predicate
+        self.rigid = rigid
+        self.concluded = concluded
+        self.by_cost = by_cost
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         protected = _protected_facts(difference, model)

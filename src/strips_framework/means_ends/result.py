@@ -5,13 +5,11 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.means_ends.node import Node, path_to
+from strips_framework.records import Record
 
 
-@frozen
-class WorldModelStatistics:
+class WorldModelStatistics(Record):
     """The columns of the paper's Table 2, plus the prover's share of the time.
 
     ``nodes`` counts every node generated; ``applications`` the nodes made by applying an
@@ -29,6 +27,27 @@ class WorldModelStatistics:
     seconds: float
     proving_seconds: float
     proof_attempts: int
+
+    __slots__ = ("nodes", "applications", "path_nodes", "path_applications", "seconds",
+                 "proving_seconds", "proof_attempts")  # fmt: skip
+
+    def __init__(
+        self,
+        nodes: int,
+        applications: int,
+        path_nodes: int,
+        path_applications: int,
+        seconds: float,
+        proving_seconds: float,
+        proof_attempts: int,
+    ) -> None:
+        self.nodes = nodes
+        self.applications = applications
+        self.path_nodes = path_nodes
+        self.path_applications = path_applications
+        self.seconds = seconds
+        self.proving_seconds = proving_seconds
+        self.proof_attempts = proof_attempts
 
     @property
     def proving_share(self) -> float:
@@ -61,12 +80,17 @@ class WorldModelStatistics:
         ]
 
 
-@frozen
-class Tree:
+class Tree(Record):
     """The whole search tree in generation order and its goal node, if any."""
 
     nodes: tuple[Node, ...]
     solution: Node | None
+
+    __slots__ = ("nodes", "solution")
+
+    def __init__(self, nodes: tuple[Node, ...], solution: Node | None) -> None:
+        self.nodes = nodes
+        self.solution = solution
 
     def solution_path(self) -> list[Node]:
         """The nodes from the root to the goal node (empty when unsolved)."""

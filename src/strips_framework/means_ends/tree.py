@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from attrs import define, field
-
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.means_ends.goal_prover import GoalProver
 from strips_framework.means_ends.node import Goal, Node, path_to
@@ -13,22 +11,29 @@ from strips_framework.worldmodel.operators import OperatorInstance
 from strips_framework.worldmodel.world import WorldModel
 
 
-@define
 class SearchTree:
     """``clock`` is the run's (see :class:`~strips_framework.limits.Clock`);
     ``searching_since`` when this search began, for its own time in the statistics.
     ``level`` is stamped on each new node: a hierarchical strategy sets it before it
-    searches each abstraction level (see :attr:`Node.level`)."""
+    searches each abstraction level (see :attr:`Node.level`). Mutable: it grows as the
+    search adds nodes."""
 
-    limits: Limits
-    prover: GoalProver
-    clock: Clock
-    nodes: list[Node] = field(factory=list)
-    level: int | None = None
-    searching_since: float = field(init=False)
+    __slots__ = ("limits", "prover", "clock", "nodes", "level", "searching_since")
 
-    def __attrs_post_init__(self) -> None:
-        self.searching_since = self.clock.elapsed()
+    def __init__(
+        self,
+        limits: Limits,
+        prover: GoalProver,
+        clock: Clock,
+        nodes: list[Node] | None = None,
+        level: int | None = None,
+    ) -> None:
+        self.limits = limits
+        self.prover = prover
+        self.clock = clock
+        self.nodes: list[Node] = [] if nodes is None else nodes
+        self.level = level
+        self.searching_since = clock.elapsed()
 
     def check_time(self) -> None:
         self.clock.check()

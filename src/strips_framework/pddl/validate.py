@@ -15,8 +15,6 @@ import re
 from collections.abc import Iterator, Sequence
 from itertools import product
 
-from attrs import frozen
-
 from strips_framework.pddl.formulas import (
     And,
     Atom,
@@ -31,18 +29,25 @@ from strips_framework.pddl.formulas import (
     substitute,
 )
 from strips_framework.pddl.task import Action, PddlTask, missing_cost
+from strips_framework.records import Record
 
 GroundAtom = tuple[str, tuple[str, ...]]
 State = frozenset[GroundAtom]
 
 
-@frozen
-class PlanCheck:
+class PlanCheck(Record):
     """The verdict on a plan; ``cost`` is the total cost (the length without costs)."""
 
     valid: bool
     message: str
     cost: int
+
+    __slots__ = ("valid", "message", "cost")
+
+    def __init__(self, valid: bool, message: str, cost: int) -> None:
+        self.valid = valid
+        self.message = message
+        self.cost = cost
 
 
 def validate_plan(task: PddlTask, steps: Sequence[str]) -> PlanCheck:

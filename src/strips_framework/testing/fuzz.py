@@ -31,7 +31,7 @@ from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from types import FrameType
 
-from attrs import define, frozen
+from strips_framework.records import Record
 
 FORMATS = (
     "pddl-domain",
@@ -96,8 +96,7 @@ class Hang(BaseException):
     ``except Exception`` in the code under test swallows it)."""
 
 
-@frozen
-class Outcome:
+class Outcome(Record):
     """How one input ended."""
 
     format: str
@@ -127,8 +126,35 @@ class Outcome:
 
     #: The error names the file it is about (the mutated one, or one it includes or
     #: refers to), and a line in it.
-    names_file: bool = False
-    names_line: bool = False
+    names_file: bool
+    names_line: bool
+
+    __slots__ = ("format", "label", "argv", "exit_code", "stderr", "traceback", "hung", "file",
+                 "names_file", "names_line")  # fmt: skip
+
+    def __init__(
+        self,
+        format: str,
+        label: str,
+        argv: tuple[str, ...],
+        exit_code: int | None,
+        stderr: str,
+        traceback: str | None,
+        hung: bool,
+        file: str | None,
+        names_file: bool = False,
+        names_line: bool = False,
+    ) -> None:
+        self.format = format
+        self.label = label
+        self.argv = argv
+        self.exit_code = exit_code
+        self.stderr = stderr
+        self.traceback = traceback
+        self.hung = hung
+        self.file = file
+        self.names_file = names_file
+        self.names_line = names_line
 
 
 # --- mutations -------------------------------------------------------------------------
@@ -303,14 +329,28 @@ def run_cli(argv: Sequence[str], cpu_seconds: float) -> tuple[int | None, str, s
     return code, stderr.getvalue(), escaped, hung
 
 
-@define
-class Workspace:
-    """A copy of the inputs to mutate, in a folder the runs may write into."""
+class Workspace(Record):
+    """A copy of the inputs to mutate, in a folder the runs may write into; ``tasks`` are
+    PDDL (domain, problem) pairs."""
 
     root: Path
     examples: Path
     tptp: list[Path]
-    tasks: list[tuple[Path, Path]]  # PDDL (domain, problem) pairs
+    tasks: list[tuple[Path, Path]]
+
+    __slots__ = ("root", "examples", "tptp", "tasks")
+
+    def __init__(
+        self,
+        root: Path,
+        examples: Path,
+        tptp: list[Path],
+        tasks: list[tuple[Path, Path]],
+    ) -> None:
+        self.root = root
+        self.examples = examples
+        self.tptp = tptp
+        self.tasks = tasks
 
     @classmethod
     def create(
@@ -375,14 +415,27 @@ class Workspace:
         return os.path.relpath(path, self.root)
 
 
-@frozen
-class Case:
+class Case(Record):
     """One fuzz input: the file to write (or none) and the command line."""
 
     label: str
     argv: tuple[str, ...]
-    file: Path | None = None
-    data: bytes = b""
+    file: Path | None
+    data: bytes
+
+    __slots__ = ("label", "argv", "file", "data")
+
+    def __init__(
+        self,
+        label: str,
+        argv: tuple[str, ...],
+        file: Path | None = None,
+        data: bytes = b"",
+    ) -> None:
+        self.label = label
+        self.argv = argv
+        self.file = file
+        self.data = data
 
 
 def _mutant(rng: random.Random, seed: Path, stem: str) -> tuple[Path, bytes]:

@@ -13,13 +13,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 
-from attrs import frozen
-
 from strips_framework.capabilities import ANSWERS, EQUALITY, QUANTIFIED_AXIOMS, SOUND
 from strips_framework.logic.cnf import SkolemNames, clausify, negated_goal_clauses
 from strips_framework.logic.formulas import Atomic, Truth
 from strips_framework.logic.parser import parse_formula
 from strips_framework.logic.terms import WILDCARD, Atom, Param
+from strips_framework.records import Record
 from strips_framework.worldmodel.operators import OperatorInstance
 from strips_framework.worldmodel.problem import DerivedFact, OperatorSchema, Problem
 from strips_framework.worldmodel.proving import Answer, ProofTask
@@ -30,8 +29,7 @@ from strips_framework.worldmodel.world import WorldModel, initial_model
 EFFORT = 2000
 
 
-@frozen
-class ProverCase:
+class ProverCase(Record):
     """A task and its known answer.
 
     ``answers`` holds every correct binding of the goal's parameters, each complete (all
@@ -49,6 +47,26 @@ class ProverCase:
     answers: frozenset[Answer]
     constants: tuple[str, ...]
     needs: frozenset[str]
+
+    __slots__ = ("name", "why", "task", "params", "answers", "constants", "needs")
+
+    def __init__(
+        self,
+        name: str,
+        why: str,
+        task: ProofTask,
+        params: tuple[Param, ...],
+        answers: frozenset[Answer],
+        constants: tuple[str, ...],
+        needs: frozenset[str],
+    ) -> None:
+        self.name = name
+        self.why = why
+        self.task = task
+        self.params = params
+        self.answers = answers
+        self.constants = constants
+        self.needs = needs
 
     @property
     def provable(self) -> bool:

@@ -16,8 +16,6 @@ from pathlib import Path
 from types import MappingProxyType, SimpleNamespace
 from typing import Any, ClassVar
 
-from attrs import define, field
-
 from strips_framework.capabilities import ADMISSIBLE, OPTIMAL, declared
 from strips_framework.formats.native import NativeLoader
 from strips_framework.logic.formulas import formula_to_str
@@ -109,13 +107,16 @@ def check_plan(planner: Planner, name: str, result: Result) -> None:
             )
 
 
-@define
 class ScoreRecorder:
-    """Wraps an evaluator and records each node it scores with the score it gave."""
+    """Wraps an evaluator and records each node it scores with the score it gave
+    (mutable: ``scores`` grows)."""
 
     name: ClassVar[str] = "kit-score-recorder"
-    inner: Any
-    scores: list[tuple[Node, float]] = field(factory=list)
+    __slots__ = ("inner", "scores")
+
+    def __init__(self, inner: Any, scores: list[tuple[Node, float]] | None = None) -> None:
+        self.inner = inner
+        self.scores: list[tuple[Node, float]] = [] if scores is None else scores
 
     @property
     def admissible(self) -> bool:

@@ -4,11 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from attrs import field, frozen
-
 from strips_framework.logic.formulas import Formula, substitute_free
 from strips_framework.logic.terms import WILDCARD, Atom, Param, Term, is_ground, term_to_str
 from strips_framework.logic.unify import substitute
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import WorldModel
 
@@ -17,21 +16,42 @@ def _bindings(items: Iterable[tuple[Param, Term]]) -> tuple[tuple[Param, Term], 
     return tuple(sorted(items, key=lambda pair: (pair[0].name, pair[0].tag)))
 
 
-@frozen(cache_hash=True)
-class OperatorInstance:
+class OperatorInstance(Record):
     """A schema with some or all of its parameters bound.
 
     Unbound parameters are still parameters; an instance is applied only once all of
-    them are bound to ground terms.
+    them are bound to ground terms. Two instances are equal when their schemas' names
+    and their bindings are (the schema itself is not compared); the search hashes
+    instances often, so the hash is computed once.
     """
 
-    schema: OperatorSchema = field(eq=False, hash=False)
-    binding: tuple[tuple[Param, Term], ...] = field(converter=_bindings)
-    schema_name: str = field(init=False)
+    schema: OperatorSchema
+    binding: tuple[tuple[Param, Term], ...]
+    schema_name: str
 
-    @schema_name.default
-    def _name(self) -> str:
-        return self.schema.name
+    FIELDS = ("schema", "binding")
+    COMPARED = ("binding", "schema_name")
+    __slots__ = ("schema", "binding", "schema_name", "_hash")
+
+    def __init__(self, schema: OperatorSchema, binding: Iterable[tuple[Param, Term]]) -> None:
+        self.schema = schema
+        self.binding = _bindings(binding)
+        self.schema_name = schema.name
+        self._hash = hash((type(self).__name__, self.binding, self.schema_name))
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            type(other) is type(self)
+            and other.binding == self.binding  # type: ignore[attr-defined]
+            and other.schema_name == self.schema_name  # type: ignore[attr-defined]
+        )
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __reduce__(self) -> tuple[type[OperatorInstance], tuple[object, ...]]:
+        # Rebuilt from its fields: a string's hash differs between processes.
+        return (type(self), (self.schema, self.binding))
 
     def binding_map(self) -> dict[Param, Term]:
         return dict(self.binding)

@@ -6,79 +6,142 @@ so that messages and plans can show what the user wrote.
 
 from __future__ import annotations
 
-from attrs import field, frozen
+from collections.abc import Iterable
 
 from strips_framework.logic.formulas import Formula, params_in
 from strips_framework.logic.terms import Atom, Param
+from strips_framework.records import Record
 
 
-@frozen
-class SourceSpan:
+class SourceSpan(Record):
     """Where something was written, for error messages: ``file:line``."""
 
     path: str
     line: int
 
+    __slots__ = ("path", "line")
+
+    def __init__(self, path: str, line: int) -> None:
+        self.path = path
+        self.line = line
+
     def __str__(self) -> str:
         return f"{self.path}:{self.line}"
 
 
-@frozen
-class OperatorSchema:
+class OperatorSchema(Record):
     """An operator family such as ``goto(m, n)`` (II.A, III.B).
 
     ``add_list`` and ``delete_list`` hold atoms over the parameters and constants;
-    delete-list atoms may use :data:`~strips_framework.logic.terms.WILDCARD`.
+    delete-list atoms may use :data:`~strips_framework.logic.terms.WILDCARD`. The
+    ``source`` is not compared.
     """
 
     name: str
-    parameters: tuple[Param, ...] = field(converter=tuple)
-    precondition: Formula = field()
-    add_list: tuple[Atom, ...] = field(converter=tuple)
-    delete_list: tuple[Atom, ...] = field(converter=tuple)
-    source: SourceSpan | None = field(default=None, eq=False)
+    parameters: tuple[Param, ...]
+    precondition: Formula
+    add_list: tuple[Atom, ...]
+    delete_list: tuple[Atom, ...]
+    source: SourceSpan | None
     #: The parameters the precondition mentions: those a precondition proof can bind.
     #: Computed once, since relevance asks for every candidate instance.
-    precondition_params: frozenset[Param] = field(init=False, eq=False, repr=False)
+    precondition_params: frozenset[Param]
 
-    def __attrs_post_init__(self) -> None:
-        object.__setattr__(self, "precondition_params", frozenset(params_in(self.precondition)))
+    FIELDS = ("name", "parameters", "precondition", "add_list", "delete_list", "source")
+    COMPARED = FIELDS[:-1]
+    __slots__ = (*FIELDS, "precondition_params")
+
+    def __init__(
+        self,
+        name: str,
+        parameters: Iterable[Param],
+        precondition: Formula,
+        add_list: Iterable[Atom],
+        delete_list: Iterable[Atom],
+        source: SourceSpan | None = None,
+    ) -> None:
+        self.name = name
+        self.parameters = tuple(parameters)
+        self.precondition = precondition
+        self.add_list = tuple(add_list)
+        self.delete_list = tuple(delete_list)
+        self.source = source
+        self.precondition_params = frozenset(params_in(precondition))
 
     def signature(self) -> str:
         return f"{self.name}({', '.join(p.name for p in self.parameters)})"
 
 
-@frozen
-class DerivedFact:
-    """A non-primitive ground fact and the primitive facts its validity rests on (III.B)."""
+class DerivedFact(Record):
+    """A non-primitive ground fact and the primitive facts its validity rests on (III.B);
+    the ``source`` is not compared."""
 
     atom: Atom
-    supports: tuple[Atom, ...] = field(converter=tuple)
-    source: SourceSpan | None = field(default=None, eq=False)
+    supports: tuple[Atom, ...]
+    source: SourceSpan | None
+
+    __slots__ = ("atom", "supports", "source")
+    COMPARED = ("atom", "supports")
+
+    def __init__(
+        self, atom: Atom, supports: Iterable[Atom], source: SourceSpan | None = None
+    ) -> None:
+        self.atom = atom
+        self.supports = tuple(supports)
+        self.source = source
 
 
-@frozen
-class Problem:
+class Problem(Record):
     """Everything the paper needs to state a task.
 
     ``facts`` are ground atoms of the initial model; ``axioms`` are closed wffs that hold in
     every model; ``derived`` are non-primitive facts with their supports; only predicates in
     ``primitive_predicates`` (pairs of name and arity) may appear on delete lists. With
-    ``unique_names`` distinct constants denote distinct objects.
+    ``unique_names`` distinct constants denote distinct objects. The ``source`` (the file
+    it was read from) is not compared.
     """
 
     name: str
-    constants: tuple[str, ...] = field(converter=tuple)
-    primitive_predicates: frozenset[tuple[str, int]] = field(converter=frozenset)
-    facts: tuple[Atom, ...] = field(converter=tuple)
-    axioms: tuple[Formula, ...] = field(converter=tuple)
-    derived: tuple[DerivedFact, ...] = field(converter=tuple)
-    operators: tuple[OperatorSchema, ...] = field(converter=tuple)
-    goal: Formula = field()
-    unique_names: bool = True
-    source: str = field(default="<memory>", eq=False)
+    constants: tuple[str, ...]
+    primitive_predicates: frozenset[tuple[str, int]]
+    facts: tuple[Atom, ...]
+    axioms: tuple[Formula, ...]
+    derived: tuple[DerivedFact, ...]
+    operators: tuple[OperatorSchema, ...]
+    goal: Formula
+    unique_names: bool
+    source: str
 
-    def __attrs_post_init__(self) -> None:
+    __slots__ = ("name", "constants", "primitive_predicates", "facts", "axioms", "derived",
+                 "operators", "goal", "unique_names", "source")  # fmt: skip
+    COMPARED = __slots__[:-1]
+
+    def __init__(
+        self,
+        name: str,
+        constants: Iterable[str],
+        primitive_predicates: Iterable[tuple[str, int]],
+        facts: Iterable[Atom],
+        axioms: Iterable[Formula],
+        derived: Iterable[DerivedFact],
+        operators: Iterable[OperatorSchema],
+        goal: Formula,
+        unique_names: bool = True,
+        source: str = "<memory>",
+    ) -> None:
+        self.name = name
+        self.constants = tuple(constants)
+        self.primitive_predicates = frozenset(primitive_predicates)
+        self.facts = tuple(facts)
+        self.axioms = tuple(axioms)
+        self.derived = tuple(derived)
+        self.operators = tuple(operators)
+        self.goal = goal
+        self.unique_names = unique_names
+        self.source = source
+        self._check_constants()
+
+    def _check_constants(self) -> None:
         """Refuse a fact naming a constant the problem does not declare: a problem built
         in code with a typo (``("AT", "ROBOT", "e ")``) would otherwise be a different
         problem than meant, silently (the native and PDDL readers report it at its line).

@@ -21,12 +21,11 @@ then costs time linear in |M0|).
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from typing import Any, ClassVar, Protocol
-
-from attrs import Attribute, field, frozen, validators
+from typing import ClassVar, Protocol
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.terms import Param, Term
+from strips_framework.records import Record
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 Answer = tuple[tuple[Param, Term], ...]
@@ -42,8 +41,13 @@ def check_clauses(what: str, clauses: Iterable[object]) -> None:
             raise ValueError(f"{what}[{number}] ({clause!r}): {problem}")
 
 
-def _check_clauses(_task: Any, attribute: Attribute, clauses: Iterable[object]) -> None:
-    check_clauses(f"ProofTask.{attribute.name}", clauses)
+def _at_least_one(name: str, value: object) -> int:
+    """``value`` when it is an int >= 1; else the ``TypeError``/``ValueError`` naming it."""
+    if not isinstance(value, int):
+        raise TypeError(f"'{name}' must be an int (got {value!r}, a {type(value).__name__})")
+    if value < 1:
+        raise ValueError(f"'{name}' must be >= 1: {value}")
+    return value
 
 
 def _malformed(clause: Clause) -> str | None:
@@ -75,8 +79,7 @@ def _bad_terms(term: object) -> Iterable[object]:
         yield term
 
 
-@frozen
-class ProofTask:
+class ProofTask(Record):
     """One question for a prover.
 
     ``axioms`` is the world model (or a TPTP problem's axioms); ``negated_goal`` is the set
@@ -95,12 +98,34 @@ class ProofTask:
     what was expected), so no prover ever sees one.
     """
 
-    axioms: tuple[Clause, ...] = field(converter=tuple, validator=_check_clauses)
-    negated_goal: tuple[Clause, ...] = field(converter=tuple, validator=_check_clauses)
-    effort: int = field(default=1000, validator=[validators.instance_of(int), validators.ge(1)])
-    max_answers: int = field(default=1, validator=[validators.instance_of(int), validators.ge(1)])
-    unique_names: bool = field(default=False, validator=validators.instance_of(bool))
-    rigid: frozenset[tuple[str, int]] = field(default=frozenset(), converter=frozenset)
+    axioms: tuple[Clause, ...]
+    negated_goal: tuple[Clause, ...]
+    effort: int
+    max_answers: int
+    unique_names: bool
+    rigid: frozenset[tuple[str, int]]
+
+    __slots__ = ("axioms", "negated_goal", "effort", "max_answers", "unique_names", "rigid")
+
+    def __init__(
+        self,
+        axioms: Iterable[Clause],
+        negated_goal: Iterable[Clause],
+        effort: int = 1000,
+        max_answers: int = 1,
+        unique_names: bool = False,
+        rigid: Iterable[tuple[str, int]] = frozenset(),
+    ) -> None:
+        self.axioms = tuple(axioms)
+        check_clauses("ProofTask.axioms", self.axioms)
+        self.negated_goal = tuple(negated_goal)
+        check_clauses("ProofTask.negated_goal", self.negated_goal)
+        self.effort = _at_least_one("effort", effort)
+        self.max_answers = _at_least_one("max_answers", max_answers)
+        if not isinstance(unique_names, bool):
+            raise TypeError(f"'unique_names' must be a bool (got {unique_names!r})")
+        self.unique_names = unique_names
+        self.rigid = frozenset(rigid)
 
     @classmethod
     def of_model(
@@ -125,8 +150,7 @@ class ProofTask:
 PROVED, SATURATED, GAVE_UP = "Unsatisfiable", "Satisfiable", "GaveUp"
 
 
-@frozen
-class ProofResult:
+class ProofResult(Record):
     """A prover's answer.
 
     ``answers`` holds one parameter binding per refutation found (empty unless proved);
@@ -138,11 +162,29 @@ class ProofResult:
     """
 
     status: str
-    answers: tuple[Answer, ...] = ()
-    uncompleted: tuple[Clause, ...] = ()
-    effort_used: int = 0
-    proof: tuple[Clause, ...] = ()
-    phases: tuple[tuple[str, str, int], ...] = ()
+    answers: tuple[Answer, ...]
+    uncompleted: tuple[Clause, ...]
+    effort_used: int
+    proof: tuple[Clause, ...]
+    phases: tuple[tuple[str, str, int], ...]
+
+    __slots__ = ("status", "answers", "uncompleted", "effort_used", "proof", "phases")
+
+    def __init__(
+        self,
+        status: str,
+        answers: tuple[Answer, ...] = (),
+        uncompleted: tuple[Clause, ...] = (),
+        effort_used: int = 0,
+        proof: tuple[Clause, ...] = (),
+        phases: tuple[tuple[str, str, int], ...] = (),
+    ) -> None:
+        self.status = status
+        self.answers = answers
+        self.uncompleted = uncompleted
+        self.effort_used = effort_used
+        self.proof = proof
+        self.phases = phases
 
     @property
     def proved(self) -> bool:

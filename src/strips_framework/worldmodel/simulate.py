@@ -32,8 +32,6 @@ import itertools
 from collections import defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 
-from attrs import frozen
-
 from strips_framework.errors import StripsError
 from strips_framework.plan_steps import split_step
 from strips_framework.logic.formulas import (
@@ -54,6 +52,7 @@ from strips_framework.logic.formulas import (
     term_variables,
 )
 from strips_framework.logic.terms import EQUALITY, WILDCARD, Atom, Param, Term
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import OperatorSchema, Problem
 
 #: Values of quantified variables and schema parameters while a formula is evaluated.
@@ -65,8 +64,7 @@ class SimulationError(StripsError):
     """The problem uses something the simulator cannot decide (not: the plan is wrong)."""
 
 
-@frozen
-class Replay:
+class Replay(Record):
     """The verdict on a plan.
 
     ``step`` is the 0-based index of the first step that cannot be executed, or
@@ -79,9 +77,15 @@ class Replay:
     step: int | None
     message: str
 
+    __slots__ = ("valid", "step", "message")
 
-@frozen
-class _Rule:
+    def __init__(self, valid: bool, step: int | None, message: str) -> None:
+        self.valid = valid
+        self.step = step
+        self.message = message
+
+
+class _Rule(Record):
     """A definite Horn axiom: when every ``body`` atom matches, every ``head`` atom holds.
 
     Head variables that the body does not bind range over the problem's constants.
@@ -90,6 +94,18 @@ class _Rule:
     body: tuple[Atom, ...]
     head: tuple[Atom, ...]
     free: tuple[Var, ...]
+
+    __slots__ = ("body", "head", "free")
+
+    def __init__(
+        self,
+        body: tuple[Atom, ...],
+        head: tuple[Atom, ...],
+        free: tuple[Var, ...],
+    ) -> None:
+        self.body = body
+        self.head = head
+        self.free = free
 
 
 def replay(problem: Problem, plan: Sequence[str]) -> Replay:

@@ -10,11 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 
-from attrs import field, frozen
-
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, clausify
 from strips_framework.logic.terms import WILDCARD, Atom
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import Problem
 
 #: Where facts are filed: ``(predicate, arity)``, or that and an argument ``position`` with
@@ -22,7 +21,6 @@ from strips_framework.worldmodel.problem import Problem
 _FactKey = tuple[str, int] | tuple[str, int, int, object]
 
 
-@frozen(eq=False)
 class InitialModel:
     """M0: its clauses, and for each derived clause the indices of its supports.
 
@@ -36,27 +34,33 @@ class InitialModel:
     derived clauses resting on it, so a model's hidden clauses are found from its
     deletions alone (:meth:`WorldModel.hidden`). ``_filed`` files the facts by predicate
     and by each argument, for :meth:`WorldModel.facts_matching`.
+
+    Not changed once built, and compared by identity: every model of a search shares
+    the one M0, and comparing its indexes would cost more than the search saves.
     """
 
-    clauses: tuple[Clause, ...] = field(converter=tuple)
-    supports: dict[int, frozenset[int]] = field(factory=dict)
-    rigid: frozenset[tuple[str, int]] = field(default=frozenset(), converter=frozenset)
-    facts: dict[Atom, int] = field(init=False)
-    dependents: dict[int, tuple[int, ...]] = field(init=False)
-    _filed: dict[_FactKey, list[Atom]] = field(init=False, repr=False)
+    __slots__ = ("clauses", "supports", "rigid", "facts", "dependents", "_filed")
 
-    def __attrs_post_init__(self) -> None:
+    def __init__(
+        self,
+        clauses: Iterable[Clause],
+        supports: dict[int, frozenset[int]] | None = None,
+        rigid: Iterable[tuple[str, int]] = frozenset(),
+    ) -> None:
+        self.clauses: tuple[Clause, ...] = tuple(clauses)
+        self.supports: dict[int, frozenset[int]] = {} if supports is None else supports
+        self.rigid: frozenset[tuple[str, int]] = frozenset(rigid)
         facts = {
             c.literals[0][1]: i
             for i, c in enumerate(self.clauses)
             if c.is_unit and c.literals[0][0] and i not in self.supports
         }
-        object.__setattr__(self, "facts", facts)
+        self.facts: dict[Atom, int] = facts
         dependents: dict[int, list[int]] = {}
         for derived, rests_on in self.supports.items():
             for index in rests_on:
                 dependents.setdefault(index, []).append(derived)
-        object.__setattr__(self, "dependents", {i: tuple(d) for i, d in dependents.items()})
+        self.dependents: dict[int, tuple[int, ...]] = {i: tuple(d) for i, d in dependents.items()}
         filed: dict[_FactKey, list[Atom]] = {}
         for atom in facts:
             predicate, arity = atom[0], len(atom) - 1
@@ -64,7 +68,7 @@ class InitialModel:
             for position, arg in enumerate(atom[1:]):
                 symbol = (arg[0], len(arg)) if type(arg) is tuple else arg
                 filed.setdefault((predicate, arity, position, symbol), []).append(atom)
-        object.__setattr__(self, "_filed", filed)
+        self._filed = filed
 
     def candidates(self, pattern: Atom) -> list[Atom]:
         """M0's facts with ``pattern``'s predicate and its constant at the most selective
@@ -86,13 +90,49 @@ class InitialModel:
         return best
 
 
-@frozen(cache_hash=True)
-class WorldModel:
-    """M0 with ``deletions`` (indices into M0) and ``additions`` (ground atoms)."""
+class WorldModel(Record):
+    """M0 with ``deletions`` (indices into M0) and ``additions`` (ground atoms).
 
-    initial: InitialModel = field(eq=False, hash=False, repr=False)
-    deletions: frozenset[int] = frozenset()
-    additions: frozenset[Atom] = frozenset()
+    Two models are equal when their deletions and additions are (the search compares
+    models of one problem, which share M0); the hash, which duplicate detection asks for
+    at every node, is computed once.
+    """
+
+    initial: InitialModel
+    deletions: frozenset[int]
+    additions: frozenset[Atom]
+
+    FIELDS = ("initial", "deletions", "additions")
+    COMPARED = ("deletions", "additions")
+    __slots__ = (*FIELDS, "_hash")
+
+    def __init__(
+        self,
+        initial: InitialModel,
+        deletions: frozenset[int] = frozenset(),
+        additions: frozenset[Atom] = frozenset(),
+    ) -> None:
+        self.initial = initial
+        self.deletions = deletions
+        self.additions = additions
+        self._hash = hash(("WorldModel", deletions, additions))
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            type(other) is WorldModel
+            and other.deletions == self.deletions
+            and other.additions == self.additions
+        )
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def __repr__(self) -> str:  # M0 is left out: it can hold thousands of clauses
+        return f"WorldModel(deletions={self.deletions!r}, additions={self.additions!r})"
+
+    def __reduce__(self) -> tuple[type[WorldModel], tuple[object, ...]]:
+        # Rebuilt from its fields: a string's hash differs between processes.
+        return (WorldModel, (self.initial, self.deletions, self.additions))
 
     def clauses(self) -> Iterator[Clause]:
         """The visible clauses: M0 less deletions and stale derived clauses, plus additions."""

@@ -42,9 +42,6 @@ import itertools
 from collections import defaultdict
 from collections.abc import Callable, Iterator, Mapping
 
-import attrs
-from attrs import frozen
-
 from strips_framework.logic.formulas import (
     And,
     Atomic,
@@ -57,6 +54,7 @@ from strips_framework.logic.formulas import (
 )
 from strips_framework.logic.terms import EQUALITY, Atom, Param, Term
 from strips_framework.logic.unify import substitute, unify
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import OperatorSchema, Problem
 
 STATIC, CRITICAL, DETAIL = 2, 1, 0
@@ -93,11 +91,15 @@ def abstracted(formula: Formula, keep: Callable[[int], bool]) -> Formula:
     return walk(formula) or Truth(True)
 
 
-@frozen
-class Hierarchy:
+class Hierarchy(Record):
     """The criticality of every precondition literal of a problem's operators."""
 
     values: Criticalities
+
+    __slots__ = ("values",)
+
+    def __init__(self, values: Criticalities) -> None:
+        self.values = values
 
     @property
     def levels(self) -> list[int]:
@@ -109,8 +111,7 @@ class Hierarchy:
     ) -> tuple[OperatorSchema, ...]:
         """The operators of the abstraction space of ``level``."""
         return tuple(
-            attrs.evolve(
-                schema,
+            schema._replace(
                 precondition=abstracted(
                     schema.precondition,
                     lambda i, name=schema.name: self.values.get((name, i), DETAIL) >= level,
@@ -120,7 +121,7 @@ class Hierarchy:
         )
 
     def problem_at(self, problem: Problem, level: int) -> Problem:
-        return attrs.evolve(problem, operators=self.operators_at(problem.operators, level))
+        return problem._replace(operators=self.operators_at(problem.operators, level))
 
     def table(self, operators: tuple[OperatorSchema, ...]) -> list[tuple[str, str, int]]:
         """(operator, literal, criticality) rows, for reports and tests."""

@@ -17,8 +17,6 @@ from collections import OrderedDict, defaultdict
 from collections.abc import Iterator, Sequence
 from typing import ClassVar
 
-from attrs import frozen
-
 from strips_framework.capabilities import ADMISSIBLE
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Not, Var
@@ -26,6 +24,7 @@ from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.features import subgoals
 from strips_framework.means_ends.node import Node
 from strips_framework.options import Configurable
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
@@ -159,13 +158,24 @@ class _Facts:
             self.by_key[(atom[0], len(atom))].append(atom)
 
 
-@frozen
-class _Query:
+class _Query(Record):
     """A relaxed condition: atoms to join, equalities and inequalities to check."""
 
     atoms: list[Atom]
     equal: list[tuple[object, object]]
     unequal: list[tuple[object, object]]
+
+    __slots__ = ("atoms", "equal", "unequal")
+
+    def __init__(
+        self,
+        atoms: list[Atom],
+        equal: list[tuple[object, object]],
+        unequal: list[tuple[object, object]],
+    ) -> None:
+        self.atoms = atoms
+        self.equal = equal
+        self.unequal = unequal
 
     @classmethod
     def of(cls, formula: Formula) -> _Query:

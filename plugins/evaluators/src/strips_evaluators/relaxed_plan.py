@@ -23,13 +23,12 @@ from collections import ChainMap, OrderedDict, defaultdict
 from collections.abc import Iterator, Mapping, Sequence
 from typing import ClassVar
 
-from attrs import define, field, frozen
-
 from strips_framework.logic.formulas import Atomic, Exists, Formula, Not, Var, conjuncts
 from strips_framework.logic.terms import EQUALITY, Atom, Param, is_ground
 from strips_framework.means_ends.node import Node
 from strips_framework.means_ends.weights import weight
 from strips_framework.options import Configurable, Option
+from strips_framework.records import Record
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
 
@@ -104,12 +103,17 @@ class RelaxedPlanEvaluator(Configurable):
         raise TypeError("the relaxed-plan evaluator scores nodes only after for_problem()")
 
 
-@frozen
-class RelaxedPlanScorer:
+class RelaxedPlanScorer(Record):
     """:class:`RelaxedPlanEvaluator` prepared for one problem."""
 
     options: RelaxedPlanEvaluator
     task: _RelaxedTask
+
+    __slots__ = ("options", "task")
+
+    def __init__(self, options: RelaxedPlanEvaluator, task: _RelaxedTask) -> None:
+        self.options = options
+        self.task = task
 
     @property
     def name(self) -> str:
@@ -131,18 +135,19 @@ class RelaxedPlanScorer:
         }
 
 
-@define
 class _ModelCosts:
     """One model's hadd costs and achievers, and the cheapest facts found for goals in
-    it, by (goal atoms, atoms given by earlier goal-list operators)."""
+    it, by (goal atoms, atoms given by earlier goal-list operators). Mutable: ``cheapest``
+    fills as goals are asked about."""
 
-    cost: dict
-    supporter: dict
-    #: The model's reached facts indexed for goal bindings (lifted relaxation only).
-    index: _FactIndex | None = None
-    cheapest: dict[tuple[tuple[Atom, ...], frozenset[Atom]], list[int] | None] = field(
-        factory=dict
-    )
+    __slots__ = ("cost", "supporter", "index", "cheapest")
+
+    def __init__(self, cost: dict, supporter: dict, index: _FactIndex | None = None) -> None:
+        self.cost = cost
+        self.supporter = supporter
+        #: The model's reached facts indexed for goal bindings (lifted relaxation only).
+        self.index = index
+        self.cheapest: dict[tuple[tuple[Atom, ...], frozenset[Atom]], list[int] | None] = {}
 
 
 class _RelaxedTask:

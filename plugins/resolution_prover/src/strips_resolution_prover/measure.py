@@ -35,8 +35,6 @@ import tempfile
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 
-from attrs import frozen
-
 from strips_framework.formats.tptp import (
     TptpProblem,
     formula_to_tptp,
@@ -45,6 +43,7 @@ from strips_framework.formats.tptp import (
 )
 from strips_framework.logic.formulas import Exists, Or, Var, substitute_free
 from strips_framework.logic.terms import Term
+from strips_framework.records import Record
 
 #: Statuses that decide a problem (E's ``ContradictoryAxioms`` proves every conjecture).
 DECIDED = {"Theorem", "Unsatisfiable", "CounterSatisfiable", "Satisfiable", "ContradictoryAxioms"}
@@ -54,14 +53,27 @@ _SZS_ANSWERS = re.compile(r"^[%#] SZS answers Tuple (\[.*\])", re.MULTILINE)
 _MADE_UP = re.compile(r"esk\d+_\d+|epred\d+_\d+")
 
 
-@frozen
-class Run:
+class Run(Record):
     """One prover's run on one problem."""
 
     status: str
     seconds: float  # CPU seconds proving (E: the process's)
     process_seconds: float  # CPU seconds of the whole process, start-up included
-    answers: str | None = None
+    answers: str | None
+
+    __slots__ = ("status", "seconds", "process_seconds", "answers")
+
+    def __init__(
+        self,
+        status: str,
+        seconds: float,
+        process_seconds: float,
+        answers: str | None = None,
+    ) -> None:
+        self.status = status
+        self.seconds = seconds
+        self.process_seconds = process_seconds
+        self.answers = answers
 
 
 def find_eprover(name: str = "eprover") -> str | None:

@@ -1,8 +1,8 @@
 """The prover's working clause: a slotted record built for the inner loop.
 
-:class:`~strips_framework.logic.clauses.Clause` is the public, validated value; creating one
-runs attrs converters, which is too slow for the tens of thousands of clauses a TPTP problem
-generates. Inside the loop clauses are :class:`PClause` records; they are converted back only
+:class:`~strips_framework.logic.clauses.Clause` is the public value; creating one
+copies its literals and sorts its bindings, which is too slow for the tens of thousands of
+clauses a TPTP problem generates. Inside the loop clauses are :class:`PClause` records; they are converted back only
 for results (proof, uncompleted proof).
 
 Invariants every ``PClause`` keeps:

@@ -23,8 +23,6 @@ from collections.abc import Set as AbstractSet
 from itertools import chain
 from typing import ClassVar
 
-from attrs import evolve
-
 from strips_framework.capabilities import (
     ANSWER_LITERALS,
     ANSWERS,
@@ -408,9 +406,9 @@ def prove_automatically(prover: ResolutionProver, task: ProofTask) -> ProofResul
     if chosen == "set-of-support" or chosen == "saturation" or task.effort < 3:
         calculus = sos if chosen == "set-of-support" else saturate
         result = calculus.prove(task)
-        return evolve(result, phases=((chosen, result.status, result.effort_used),))
+        return result._replace(phases=((chosen, result.status, result.effort_used),))
     relevant = relevant_axioms(task.axioms, task.negated_goal)
-    pruned = evolve(task, axioms=relevant) if len(relevant) < len(task.axioms) else None
+    pruned = task._replace(axioms=relevant) if len(relevant) < len(task.axioms) else None
     return interleave(task, saturate, sos, pruned)
 
 
@@ -479,7 +477,7 @@ def _schedule_result(
         (name, result.status if i == shown else GAVE_UP, attempt.effort)
         for i, (name, attempt) in enumerate(zip(names, attempts))
     )
-    return evolve(result, effort_used=sum(a.effort for a in attempts), phases=phases)
+    return result._replace(effort_used=sum(a.effort for a in attempts), phases=phases)
 
 
 def _hand_on(unused: int, live: Sequence[int], bounds: list[int]) -> None:

@@ -3,20 +3,31 @@
 from __future__ import annotations
 
 import z3
-from attrs import frozen
 
+from strips_framework.records import Record
 from strips_framework.worldmodel.proving import GAVE_UP, PROVED, SATURATED, Answer
 
 
-@frozen
-class Outcome:
+class Outcome(Record):
     """An SZS status and, when proved, the answers found (one empty answer without
     parameters); when not, ``lemmas``: ground atoms found entailed on the way, which the
     uncompleted proof may resolve with like facts."""
 
     status: str
-    answers: tuple[Answer, ...] = ()
-    lemmas: tuple[tuple, ...] = ()
+    answers: tuple[Answer, ...]
+    lemmas: tuple[tuple, ...]
+
+    __slots__ = ("status", "answers", "lemmas")
+
+    def __init__(
+        self,
+        status: str,
+        answers: tuple[Answer, ...] = (),
+        lemmas: tuple[tuple, ...] = (),
+    ) -> None:
+        self.status = status
+        self.answers = answers
+        self.lemmas = lemmas
 
 
 def status_of(result: z3.CheckSatResult) -> str:
