@@ -65,7 +65,7 @@ def test_a_problem_it_cannot_handle_is_refused_before_the_search(environment, tm
     config.write_text('prover = "facts"\n')
     refused = strips(environment, "solve", "examples/robot-world/light.strips", "--config", str(config))
     assert refused.returncode == 2
-    assert "needs a prover with 'quantified-axioms', but prover 'facts'" in refused.stderr
+    assert "needs a prover with 'quantified-axioms' or 'definite-horn', but prover 'facts'" in refused.stderr
 
 
 def test_its_own_tests_run_the_conformance_kit_and_pass(environment):

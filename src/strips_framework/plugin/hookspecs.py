@@ -6,8 +6,8 @@ keeps the classes in a :class:`~strips_framework.plugin.registry.Registry`, the 
 class of each kind by its ``name``, and the search calls the chosen objects directly.
 
 Every implementation class has a ``name`` class attribute and declared options
-(:mod:`strips_framework.options`: a ``Configurable`` with its ``Option`` tuple, or an attrs
-class whose init fields are its options): the config passes ``[prover.options]`` and the
+(:mod:`strips_framework.options`: a ``Configurable`` with its ``Option`` tuple; a class
+declared otherwise has none): the config passes ``[prover.options]`` and the
 like as keyword arguments, and ``strips plugins`` lists the options with their defaults. It declares
 ``capabilities`` and, if it needs something of the other components, ``requires`` (see
 :mod:`strips_framework.capabilities`); :mod:`strips_framework.testing` checks both.

@@ -215,8 +215,8 @@ class ProverSession(Protocol):
 class TheoremProver(Protocol):
     """A prover implementation, registered through ``strips_register_provers``.
 
-    Implementations declare their options (:mod:`strips_framework.options`, or attrs
-    fields; the config passes them as keyword arguments); ``name`` is what a config
+    Implementations declare their options (:mod:`strips_framework.options`; the config
+    passes them as keyword arguments); ``name`` is what a config
     names them by. ``open`` is
     optional (see :func:`open_session`); a prover that can index M0 once implements it.
     """
