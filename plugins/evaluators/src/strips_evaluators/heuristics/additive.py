@@ -10,32 +10,11 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-
-from strips_evaluators.heuristics.exploration import Explorer, explorer
+from strips_evaluators.heuristics.exploration import GoalCostEstimator, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
-from strips_framework.records import Record
-
-
-class AdditiveEstimator(Record):
-    explorer: Explorer
-    goal_mask: int
-
-    __slots__ = ("explorer", "goal_mask")
-
-    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
-        self.explorer = explorer
-        self.goal_mask = goal_mask
-
-    def estimate(self, state: int) -> float:
-        if state & self.goal_mask == self.goal_mask:
-            return 0
-        return self.explorer.hadd(state)
-
-    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
-        return self.estimate(state), ()
 
 
 class AdditiveHeuristic(Configurable):
@@ -48,5 +27,6 @@ class AdditiveHeuristic(Configurable):
     name: ClassVar[str] = "hadd"
     admissible: ClassVar[bool] = False
 
-    def for_task(self, task: GroundTask) -> AdditiveEstimator:
-        return AdditiveEstimator(explorer(relax(task, factor_sharing=SHARING)), task.goal_mask)
+    def for_task(self, task: GroundTask) -> GoalCostEstimator:
+        relaxed = explorer(relax(task, factor_sharing=SHARING))
+        return GoalCostEstimator(relaxed, task.goal_mask, "hadd")

@@ -19,6 +19,7 @@ from typing import Protocol
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, start_exploration
 from strips_framework.compiled import compiled_module as shared_compiled_module
+from strips_framework.records import Record
 
 
 class Explorer(Protocol):
@@ -31,6 +32,33 @@ class Explorer(Protocol):
     def relaxed_plan(self, state: int) -> tuple[float, list[int]]: ...
 
     def preferred(self, state: int) -> tuple[float, list[int]]: ...
+
+
+class GoalCostEstimator(Record):
+    """A state's estimate as one of an :class:`Explorer`'s goal costs, named by
+    ``measure`` (``"hadd"`` or ``"hmax"``): 0 at a goal state, which the explorer leaves to
+    its caller. hadd and hmax differ only in how the explorer combines costs, so they share
+    this estimator; neither has preferred operators (``ff`` has them)."""
+
+    explorer: Explorer
+    goal_mask: int
+    measure: str
+
+    __slots__ = ("explorer", "goal_mask", "measure")
+
+    def __init__(self, explorer: Explorer, goal_mask: int, measure: str) -> None:
+        self.explorer = explorer
+        self.goal_mask = goal_mask
+        self.measure = measure
+
+    def estimate(self, state: int) -> float:
+        if state & self.goal_mask == self.goal_mask:
+            return 0
+        cost: float = getattr(self.explorer, self.measure)(state)
+        return cost
+
+    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
+        return self.estimate(state), ()
 
 
 def compiled_module(compiled: bool | None = None) -> ModuleType | None:

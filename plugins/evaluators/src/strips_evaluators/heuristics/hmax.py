@@ -10,32 +10,11 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-
-from strips_evaluators.heuristics.exploration import Explorer, explorer
+from strips_evaluators.heuristics.exploration import GoalCostEstimator, explorer
 from strips_evaluators.heuristics.factoring import SHARING
 from strips_evaluators.heuristics.relaxation import relax
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
-from strips_framework.records import Record
-
-
-class MaxEstimator(Record):
-    explorer: Explorer
-    goal_mask: int
-
-    __slots__ = ("explorer", "goal_mask")
-
-    def __init__(self, explorer: Explorer, goal_mask: int) -> None:
-        self.explorer = explorer
-        self.goal_mask = goal_mask
-
-    def estimate(self, state: int) -> float:
-        if state & self.goal_mask == self.goal_mask:
-            return 0
-        return self.explorer.hmax(state)
-
-    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
-        return self.estimate(state), ()
 
 
 class MaxHeuristic(Configurable):
@@ -49,5 +28,6 @@ class MaxHeuristic(Configurable):
     name: ClassVar[str] = "hmax"
     admissible: ClassVar[bool] = True
 
-    def for_task(self, task: GroundTask) -> MaxEstimator:
-        return MaxEstimator(explorer(relax(task, factor_sharing=SHARING)), task.goal_mask)
+    def for_task(self, task: GroundTask) -> GoalCostEstimator:
+        relaxed = explorer(relax(task, factor_sharing=SHARING))
+        return GoalCostEstimator(relaxed, task.goal_mask, "hmax")
