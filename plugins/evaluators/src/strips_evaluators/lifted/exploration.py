@@ -17,7 +17,8 @@ import math
 from collections.abc import Callable, Collection
 from heapq import heappop, heappush
 
-from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram, Step, passes
+from strips_evaluators.lifted.matching import compiled
+from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram
 from strips_framework.lifted.components import ActionInstance, GroundAtom
 
 #: A rule instance that achieved a fact: the rule, its fluent body facts, its slots.
@@ -35,6 +36,9 @@ class Exploration:
         self.unconditional: list[tuple[int, list[GroundAtom], Supporter]] = []
         for plan in program.unconditional:
             join(program, plan, None, {}, self._collect)
+        for plans in program.triggers.values():  # compiled once, at set-up
+            for plan in plans:
+                compiled(program, plan)
 
     def _collect(self, plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
         rule = plan.rule
@@ -136,27 +140,32 @@ def join(
 ) -> None:
     """Every completion of ``plan`` with its trigger bound to ``fact`` (no trigger when
     None), fluent atoms matched in ``lookup`` (indexes by ``(predicate, positions)``):
-    ``emit(plan, slots, matched)`` with the fluent facts matched, trigger first."""
+    ``emit(plan, slots, matched)`` with the fluent facts matched, trigger first. Each
+    candidate fact is matched by the step's compiled function (:mod:`.matching`)."""
     slots: list = list(plan.rule.template)
-    static = program.static_facts
+    functions = compiled(program, plan)
     matched: list[GroundAtom] = []
     if fact is not None:
-        if not _match(plan.trigger, fact, slots, static):
+        if not functions.trigger(fact, slots):  # type: ignore[misc]
             return
         matched.append(fact)
     steps = plan.steps
+    matchers = functions.steps
     last = len(steps)
     static_indexes = program.static_indexes
-
-    simple = not plan.free and not plan.final_checks
+    final = functions.final
+    simple = not plan.free and final is None
     probes = plan.probes
 
     def extend(depth: int) -> None:
         if depth == last:
             if simple:
                 emit(plan, slots, matched)
+            elif not plan.free:
+                if final(slots):  # type: ignore[misc]
+                    emit(plan, slots, matched)
             else:
-                for _ in program.instances(plan, slots):
+                for _ in program.instances(plan, slots, final):
                     emit(plan, slots, matched)
             return
         for later in probes[depth]:
@@ -172,27 +181,20 @@ def join(
         candidates = index.get(tuple([slots[s] for s in step.key]))
         if not candidates:
             return
-        for candidate in candidates:
-            if step.before_trigger and candidate == fact:
-                continue
-            if _match(step, candidate, slots, static):
-                if step.fluent:
+        match = matchers[depth]
+        skip = fact if step.before_trigger else None
+        if step.fluent:
+            for candidate in candidates:
+                if candidate is not skip and candidate != skip and match(candidate, slots):
                     matched.append(candidate)
                     extend(depth + 1)
                     matched.pop()
-                else:
+        else:
+            for candidate in candidates:
+                if match(candidate, slots):
                     extend(depth + 1)
 
     extend(0)
-
-
-def _match(step: Step, fact: GroundAtom, slots: list, static: dict) -> bool:
-    for position, slot in step.binds:
-        slots[slot] = fact[position]
-    for position, slot in step.repeats:
-        if fact[position] != slots[slot]:
-            return False
-    return not step.checks or passes(step.checks, slots, static)
 
 
 def relaxed_plan(

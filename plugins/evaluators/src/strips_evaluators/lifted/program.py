@@ -258,11 +258,13 @@ class RuleProgram:
         self.fluent_goal: tuple[GroundAtom, ...] = ()
         #: Goal facts of static predicates that do not hold: no state reaches the goal.
         self.static_goal_missing = 0
+        #: The plans' compiled tests by plan identity (:func:`.matching.compiled`).
+        self.compiled: dict[int, object] = {}
 
     def _index_static_facts(self) -> None:
         """Fills the static indexes the plans use (once every rule is added)."""
         for (predicate, positions), index in self.static_indexes.items():
-            for fact in self.static_facts.get(predicate, ()):
+            for fact in sorted(self.static_facts.get(predicate, ())):  # no order from hashing
                 index.setdefault(tuple([fact[i] for i in positions]), []).append(fact)
 
     def cost_of(self, rule: Rule, slots: list[str]) -> int:
@@ -494,18 +496,19 @@ class RuleProgram:
             before_trigger=before,
         )
 
-    def instances(self, plan: Plan, slots: list[str]) -> Iterator[None]:
+    def instances(self, plan: Plan, slots: list[str], final: Callable[[list], bool] | None) -> Iterator[None]:
         """Complete a binding whose atoms are all matched: every assignment of the free
-        slots (over their types' objects) that passes the final checks, written into
+        slots (over their types' objects) that passes the final checks (``final``, their
+        compiled form, see :mod:`.matching`; None when there are none), written into
         ``slots``; one ``None`` per assignment."""
         if not plan.free:
-            if passes(plan.final_checks, slots, self.static_facts):
+            if final is None or final(slots):
                 yield None
             return
         for values in product(*plan.domains):
             for slot, value in zip(plan.free, values):
                 slots[slot] = value
-            if passes(plan.final_checks, slots, self.static_facts):
+            if final is None or final(slots):
                 yield None
 
 
@@ -727,22 +730,3 @@ def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list]
         atom = (name,)
         return lambda slots: atom
     return itemgetter(name_slot, *terms)
-
-
-def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[GroundAtom]]) -> bool:
-    for check in checks:
-        kind = check.kind
-        if kind == "type":
-            if slots[check.slots[0]] not in check.domain:
-                return False
-        elif kind == "!=":
-            if slots[check.slots[0]] == slots[check.slots[1]]:
-                return False
-        elif kind == "=":
-            if slots[check.slots[0]] != slots[check.slots[1]]:
-                return False
-        elif ((check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]) != (
-            kind == "present"
-        ):
-            return False
-    return True
