@@ -17,7 +17,7 @@ import math
 from collections.abc import Callable, Collection
 from heapq import heappop, heappush
 
-from strips_evaluators.lifted.matching import compiled
+from strips_evaluators.lifted.matching import CompiledPlan, compiled
 from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram
 from strips_framework.lifted.components import ActionInstance, GroundAtom
 
@@ -36,9 +36,11 @@ class Exploration:
         self.unconditional: list[tuple[int, list[GroundAtom], Supporter]] = []
         for plan in program.unconditional:
             join(program, plan, None, {}, self._collect)
-        for plans in program.triggers.values():  # compiled once, at set-up
-            for plan in plans:
-                compiled(program, plan)
+        #: The plans each predicate triggers, with their compiled tests.
+        self._triggers: dict[str, list[tuple[Plan, CompiledPlan]]] = {
+            predicate: [(plan, compiled(program, plan)) for plan in plans]
+            for predicate, plans in program.triggers.items()
+        }
 
     def _collect(self, plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
         rule = plan.rule
@@ -59,17 +61,23 @@ class Exploration:
         program = self.program
         cost: dict[GroundAtom, float] = {}
         supporter: dict[GroundAtom, Supporter] = {}
-        heap: list[tuple[float, GroundAtom]] = []
-        for fact in state:
+        # The queue: facts by cost, first in first out within a cost, and a heap of the
+        # costs that have facts (comparing costs, not facts: ties are the rule here).
+        buckets: dict[float, list[GroundAtom]] = {0: sorted(state)}
+        keys: list[float] = [0]
+        for fact in buckets[0]:
             cost[fact] = 0
-            heap.append((0, fact))
         for value, heads, support in self.unconditional:
             for head in heads:
                 if value < cost.get(head, math.inf):
                     cost[head] = value
                     supporter[head] = support
-                    heap.append((value, head))
-        heap.sort()
+                    bucket = buckets.get(value)
+                    if bucket is None:
+                        buckets[value] = [head]
+                        heappush(keys, value)
+                    else:
+                        bucket.append(head)
         indexes: dict[str, list[tuple[tuple[int, ...], Index]]] = {
             predicate: [(positions, {}) for positions in all_positions]
             for predicate, all_positions in program.fluent_indexes.items()
@@ -84,7 +92,7 @@ class Exploration:
             return cost, supporter  # nothing to reach
         goals_left = len(goal) if goal else -1  # -1: never counts down to 0
 
-        triggers = program.triggers
+        triggers = self._triggers
 
         cost_get = cost.get
         cost_of = program.cost_of
@@ -109,27 +117,40 @@ class Exploration:
                         support = (rule, tuple(matched), tuple(slots))
                     cost[head] = value
                     supporter[head] = support
-                    heappush(heap, (value, head))
+                    bucket = buckets.get(value)
+                    if bucket is None:
+                        buckets[value] = [head]
+                        heappush(keys, value)
+                    else:
+                        bucket.append(head)
 
-        while heap:
-            value, fact = heappop(heap)
-            if cost[fact] != value:
-                continue  # reached more cheaply after it was queued
-            if fact in goal:
-                goals_left -= 1
-                if not goals_left:
-                    break
-            predicate = fact[0]
-            for positions, index in indexes.get(predicate, ()):
-                key = tuple([fact[i] for i in positions])
-                found = index.get(key)
-                if found is None:
-                    index[key] = [fact]
-                else:
-                    found.append(fact)
-            for plan in triggers.get(predicate, ()):
-                join(program, plan, fact, lookup, fire)
+        while keys:
+            value = keys[0]
+            bucket = buckets[value]
+            done = 0
+            while done < len(bucket):  # zero-cost rules add to it as it is read
+                fact = bucket[done]
+                done += 1
+                if cost[fact] != value:
+                    continue  # reached more cheaply after it was queued
+                if fact in goal:
+                    goals_left -= 1
+                    if not goals_left:
+                        return cost, supporter
+                predicate = fact[0]
+                for positions, index in indexes.get(predicate, ()):
+                    key = tuple([fact[i] for i in positions])
+                    found = index.get(key)
+                    if found is None:
+                        index[key] = [fact]
+                    else:
+                        found.append(fact)
+                for plan, functions in triggers.get(predicate, ()):
+                    join(program, plan, fact, lookup, fire, functions)
+            del buckets[value]
+            heappop(keys)
         return cost, supporter
+
 
 def join(
     program: RuleProgram,
@@ -137,23 +158,30 @@ def join(
     fact: GroundAtom | None,
     lookup: dict[tuple[str, tuple[int, ...]], Index],
     emit: Callable[[Plan, list, list[GroundAtom]], None],
+    functions: CompiledPlan | None = None,
 ) -> None:
     """Every completion of ``plan`` with its trigger bound to ``fact`` (no trigger when
     None), fluent atoms matched in ``lookup`` (indexes by ``(predicate, positions)``):
     ``emit(plan, slots, matched)`` with the fluent facts matched, trigger first. Each
-    candidate fact is matched by the step's compiled function (:mod:`.matching`)."""
+    candidate fact is matched by the step's compiled function (``functions``, made
+    here when not given: :mod:`.matching`)."""
+    if functions is None:
+        functions = compiled(program, plan)
     slots: list = list(plan.rule.template)
-    functions = compiled(program, plan)
     matched: list[GroundAtom] = []
     if fact is not None:
         if not functions.trigger(fact, slots):  # type: ignore[misc]
             return
         matched.append(fact)
     steps = plan.steps
+    final = functions.final
+    if not steps and not plan.free:  # one atom: nothing to join
+        if final is None or final(slots):
+            emit(plan, slots, matched)
+        return
     matchers = functions.steps
     last = len(steps)
     static_indexes = program.static_indexes
-    final = functions.final
     simple = not plan.free and final is None
     probes = plan.probes
 

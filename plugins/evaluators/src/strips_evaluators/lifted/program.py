@@ -362,6 +362,8 @@ class RuleProgram:
         domains = {i: self.objects_of(p.types) for i, p in enumerate(everything)}
         # Hidden variables count as bound: the plans never enumerate them.
         variables = [i for i, p in enumerate(everything) if p.name not in hidden]
+        if any(not domains[i] for i in variables):
+            return  # a variable of a type without objects: the rule has no instance
         fluent = [i for i, (predicate, _) in enumerate(atoms) if predicate not in self.static]
         if action == AXIOM and derivation:
             self.derivations.append(self._plan(rule, atoms, None, checks, domains, variables))
