@@ -25,7 +25,9 @@ def _passes(checks: tuple[Check, ...], slots: list, static: dict[str, set[Ground
         elif check.kind == "=":
             ok = values[0] == values[1]
         else:
-            ok = ((check.predicate, *values) in static[check.predicate]) == (check.kind == "present")
+            ok = ((check.predicate, *values) in static[check.predicate]) == (
+                check.kind == "present"
+            )
         if not ok:
             return False
     return True
@@ -43,7 +45,9 @@ def _match(step: Step, fact: GroundAtom, slots: list, static: dict[str, set[Grou
 def _candidate(step: Step, slots: list, pool: list[str], rng: random.Random) -> GroundAtom:
     """A fact of the step's predicate that agrees with ``slots`` on the key (as the index
     lookup guarantees), random elsewhere."""
-    size = max([p for p, _ in step.binds] + [p for p, _ in step.repeats] + list(step.positions), default=0)
+    size = max(
+        [p for p, _ in step.binds] + [p for p, _ in step.repeats] + list(step.positions), default=0
+    )
     fact = [rng.choice(pool) for _ in range(size)]
     for position, slot in zip(step.positions, step.key):
         fact[position - 1] = slots[slot]
@@ -70,7 +74,10 @@ def test_compiled_steps_and_final_checks_agree_with_the_records() -> None:
             for step, function in steps:
                 kinds.update(check.kind for check in step.checks)
                 for _ in range(20):
-                    slots = [value if value is not None else rng.choice(pool) for value in plan.rule.template]
+                    slots = [
+                        value if value is not None else rng.choice(pool)
+                        for value in plan.rule.template
+                    ]
                     fact = _candidate(step, slots, pool, rng)
                     expected_slots = list(slots)
                     expected = _match(step, fact, expected_slots, static)
@@ -79,7 +86,9 @@ def test_compiled_steps_and_final_checks_agree_with_the_records() -> None:
                     compared += 1
             kinds.update(check.kind for check in plan.final_checks)
             for _ in range(20):
-                slots = [value if value is not None else rng.choice(pool) for value in plan.rule.template]
+                slots = [
+                    value if value is not None else rng.choice(pool) for value in plan.rule.template
+                ]
                 expected = _passes(plan.final_checks, slots, static)
                 assert (functions.final is None or functions.final(slots)) == expected
     assert compared > 1000
@@ -90,3 +99,22 @@ def test_a_plan_is_compiled_once() -> None:
     program = Program(random_pddl_task(1))
     plan = _plans(program)[0]
     assert compiled(program, plan) is compiled(program, plan)
+
+
+def test_free_slots_of_a_one_object_type_are_preset_and_the_others_range() -> None:
+    """A slot no atom binds ranges over its type's objects at every complete binding;
+    with one object it is written once, before the join."""
+    seen_preset = seen_free = False
+    for seed in range(40):
+        program = Program(random_pddl_task(seed))
+        for plan in _plans(program):
+            functions = compiled(program, plan)
+            domains = dict(zip(plan.free, plan.domains))
+            assert sorted([slot for slot, _ in functions.preset] + list(functions.free)) == sorted(plan.free)
+            for slot, value in functions.preset:
+                assert domains[slot] == (value,)
+            assert functions.domains == tuple(domains[slot] for slot in functions.free)
+            assert all(len(domain) > 1 for domain in functions.domains)
+            seen_preset |= bool(functions.preset)
+            seen_free |= bool(functions.free)
+    assert seen_preset and seen_free

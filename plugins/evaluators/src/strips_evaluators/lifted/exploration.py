@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Collection
 from heapq import heappop, heappush
+from itertools import product
 
 from strips_evaluators.lifted.matching import CompiledPlan, compiled
 from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram
@@ -168,6 +169,8 @@ def join(
     if functions is None:
         functions = compiled(program, plan)
     slots: list = list(plan.rule.template)
+    for slot, value in functions.preset:
+        slots[slot] = value
     matched: list[GroundAtom] = []
     if fact is not None:
         if not functions.trigger(fact, slots):  # type: ignore[misc]
@@ -175,26 +178,30 @@ def join(
         matched.append(fact)
     steps = plan.steps
     final = functions.final
-    if not steps and not plan.free:  # one atom: nothing to join
+    free = functions.free
+    if not steps and not free:  # one atom: nothing to join
         if final is None or final(slots):
             emit(plan, slots, matched)
         return
     matchers = functions.steps
     last = len(steps)
     static_indexes = program.static_indexes
-    simple = not plan.free and final is None
+    simple = not free and final is None
     probes = plan.probes
 
     def extend(depth: int) -> None:
         if depth == last:
             if simple:
                 emit(plan, slots, matched)
-            elif not plan.free:
+            elif not free:
                 if final(slots):  # type: ignore[misc]
                     emit(plan, slots, matched)
-            else:
-                for _ in program.instances(plan, slots, final):
-                    emit(plan, slots, matched)
+            else:  # every assignment of the free slots over their types' objects
+                for values in product(*functions.domains):
+                    for slot, value in zip(free, values):
+                        slots[slot] = value
+                    if final is None or final(slots):
+                        emit(plan, slots, matched)
             return
         for later in probes[depth]:
             probe = steps[later]

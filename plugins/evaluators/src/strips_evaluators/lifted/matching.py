@@ -27,12 +27,22 @@ Test = Callable[[list], bool]
 
 class CompiledPlan:
     """The functions of one :class:`~.program.Plan`: ``trigger`` (None without one),
-    one per step, and ``final`` for the final checks (None when there are none)."""
+    one per step, and ``final`` for the final checks (None when there are none). Its
+    free slots (bound by no atom) are split into ``preset``, ``(slot, object)`` for
+    those whose type has one object (written into the slots once, before the join), and
+    the ``free`` ones with their ``domains``, which every complete binding ranges over."""
 
-    __slots__ = ("final", "steps", "trigger")
+    __slots__ = ("domains", "final", "free", "preset", "steps", "trigger")
 
     def __init__(self, plan: Plan, static: dict[str, set[GroundAtom]]) -> None:
-        self.trigger: Matcher | None = None if plan.trigger is None else _matcher(plan.trigger, static)
+        self.preset = tuple(
+            (slot, domain[0]) for slot, domain in zip(plan.free, plan.domains) if len(domain) == 1
+        )
+        self.free = tuple(slot for slot, domain in zip(plan.free, plan.domains) if len(domain) != 1)
+        self.domains = tuple(domain for domain in plan.domains if len(domain) != 1)
+        self.trigger: Matcher | None = (
+            None if plan.trigger is None else _matcher(plan.trigger, static)
+        )
         self.steps: tuple[Matcher, ...] = tuple(_matcher(step, static) for step in plan.steps)
         self.final: Test | None = None
         if plan.final_checks:
@@ -58,7 +68,9 @@ def _matcher(step: Step, static: dict[str, set[GroundAtom]]) -> Matcher:
     return _compile("match", "fact, s", assignments, conditions, namespace)
 
 
-def _condition(check: Check, namespace: dict[str, object], static: dict[str, set[GroundAtom]]) -> str:
+def _condition(
+    check: Check, namespace: dict[str, object], static: dict[str, set[GroundAtom]]
+) -> str:
     """``check`` as a Python expression over the slot list ``s``; the objects it needs
     (a type's domain, a static predicate's facts) go into ``namespace``."""
     slots = [f"s[{slot}]" for slot in check.slots]
@@ -78,7 +90,11 @@ def _condition(check: Check, namespace: dict[str, object], static: dict[str, set
 
 
 def _compile(
-    name: str, parameters: str, assignments: list[str], conditions: list[str], namespace: dict[str, object]
+    name: str,
+    parameters: str,
+    assignments: list[str],
+    conditions: list[str],
+    namespace: dict[str, object],
 ) -> Callable:
     lines = [f"def {name}({parameters}):"]
     lines += [f"    {line}" for line in assignments]

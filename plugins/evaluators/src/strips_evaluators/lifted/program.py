@@ -23,8 +23,7 @@ atom plus one.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
-from itertools import product
+from collections.abc import Callable, Iterable
 from operator import itemgetter
 
 from strips_framework.errors import InputError
@@ -497,22 +496,6 @@ class RuleProgram:
             fluent=fluent,
             before_trigger=before,
         )
-
-    def instances(self, plan: Plan, slots: list[str], final: Callable[[list], bool] | None) -> Iterator[None]:
-        """Complete a binding whose atoms are all matched: every assignment of the free
-        slots (over their types' objects) that passes the final checks (``final``, their
-        compiled form, see :mod:`.matching`; None when there are none), written into
-        ``slots``; one ``None`` per assignment."""
-        if not plan.free:
-            if final is None or final(slots):
-                yield None
-            return
-        for values in product(*plan.domains):
-            for slot, value in zip(plan.free, values):
-                slots[slot] = value
-            if final is None or final(slots):
-                yield None
-
 
 class Program(RuleProgram):
     """The relaxed program of a PDDL task (see the module docstring)."""
