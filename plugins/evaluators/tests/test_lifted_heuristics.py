@@ -177,12 +177,12 @@ def test_each_rule_instance_is_found_once(seed, monkeypatch):
     found: list[tuple] = []
     join = exploration.join
 
-    def recording(program, plan, fact, lookup, emit):
+    def recording(program, plan, fact, lookup, emit, functions=None):
         def record(plan, slots, matched):
             found.append((plan.rule.number, tuple(slots)))
             emit(plan, slots, matched)
 
-        join(program, plan, fact, lookup, record)
+        join(program, plan, fact, lookup, record, functions)
 
     monkeypatch.setattr(exploration, "join", recording)
     task = random_pddl_task(seed)

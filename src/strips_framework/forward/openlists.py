@@ -14,6 +14,12 @@ Both keep, as Fast Downward does, one FIFO bucket (a deque) per key and a heap o
 that have a bucket: a push is a deque append, and the heap sees each key once per
 stretch in which its bucket is non-empty. Lazy search pushes every successor of a state
 under the same key, so :meth:`push_all` appends them to the bucket in one call.
+
+A search that takes a state's successors one at a time (the lifted lazy search) keeps
+one *cursor* entry for them in the full list: :meth:`push_front` puts it back where it
+was popped from, at the head of its bucket, so the entries come out in the order they
+would have had if all had been pushed at once; :meth:`AlternationOpenList.push_preferred`
+puts the preferred ones in the preferred list alone.
 """
 
 from __future__ import annotations
@@ -34,6 +40,8 @@ class OpenList(Protocol[Item]):
     def push_all(self, key: object, items: Sequence[Item], preferred: Collection[Item]) -> None: ...
 
     def pop(self) -> Item: ...
+
+    def push_front(self, key: object, item: Item) -> None: ...
 
     def reward_progress(self) -> None: ...
 
@@ -92,6 +100,11 @@ class BestFirstOpenList(Generic[Item]):
     def pop(self) -> Item:
         return self._items.pop()
 
+    def push_front(self, key: object, item: Item) -> None:
+        """Insert ``item`` under ``key`` ahead of the entries already there."""
+        self._items.bucket(key).appendleft(item)
+        self._items.size += 1
+
     def reward_progress(self) -> None:
         """Nothing to boost in a single list."""
 
@@ -129,6 +142,18 @@ class AlternationOpenList(Generic[Item]):
             if chosen:
                 self._preferred.bucket(key).extend(chosen)
                 self._preferred.size += len(chosen)
+
+    def push_preferred(self, key: object, items: Sequence[Item]) -> None:
+        """Insert ``items`` under ``key`` into the preferred list only (their full-list
+        entries are made as they are needed, see the module docstring)."""
+        if items:
+            self._preferred.bucket(key).extend(items)
+            self._preferred.size += len(items)
+
+    def push_front(self, key: object, item: Item) -> None:
+        """Insert ``item`` under ``key`` in the full list, ahead of the entries there."""
+        self._all.bucket(key).appendleft(item)
+        self._all.size += 1
 
     def pop(self) -> Item:
         turns = self._turns

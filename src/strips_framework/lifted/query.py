@@ -27,7 +27,7 @@ a relation is built once per relation (so once per task for a static one).
 from __future__ import annotations
 
 from bisect import bisect_left, insort
-from collections.abc import Collection, Iterable, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from operator import itemgetter
 from typing import Protocol
 
@@ -294,6 +294,11 @@ class QueryEngine(Protocol):
         in an order that does not depend on hashing."""
         ...
 
+    def stream(self, query: Query, facts: FactBase) -> Iterator[Row]:
+        """The answers of :meth:`answers` (unseeded), in the same order, as an iterator
+        that finds them as they are asked for."""
+        ...
+
 
 class _Plan:
     """How one query is joined: the order of its relations (and, for an acyclic one,
@@ -359,9 +364,48 @@ class JoinEngine:
         return relations
 
     def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+        prepared = self._prepared(query, facts, seed)
+        if prepared is None:
+            return []
+        relations, plan = prepared
+        if not relations:  # no variables: only ground negated atoms and inequalities
+            columns, rows = [], _Filters(query, facts).apply([], [()])
+        elif plan.tree is not None:
+            columns, rows = self._acyclic(relations, plan.tree, query, facts)
+        else:
+            columns, rows = self._join_in_order(_greedy_order(relations), query, facts)
+        return _project(columns, rows, query)
+
+    def stream(self, query: Query, facts: FactBase) -> Iterator[Row]:
+        """The rows :meth:`answers` gives, in the same order, found one at a time: a
+        depth-first nested-loop join over the same relations in the same order, probing
+        the same (filing-ordered) indexes. The hash join extends each row in turn by
+        its matches in bucket order, so its result is exactly the nested loop's order;
+        the semi-join passes only take out rows that lead to no answer, which here are
+        dead ends. The first answers cost what reaching them costs, not what all of
+        them cost (a lazy search asks for one successor at a time)."""
+        prepared = self._prepared(query, facts, None)
+        if prepared is None:
+            return
+        relations, plan = prepared
+        if not relations:
+            yield from _project([], _Filters(query, facts).apply([], [()]), query)
+            return
+        if plan.tree is not None:
+            root = plan.tree[-1][1] if plan.tree else 0
+            order = [relations[root]] + [relations[child] for child, _ in reversed(plan.tree)]
+        else:
+            order = _greedy_order(relations)
+        yield from _NestedLoop(order, query, facts).rows()
+
+    def _prepared(
+        self, query: Query, facts: FactBase, seed: dict[str, str] | None
+    ) -> tuple[list[Relation], _Plan] | None:
+        """The query's relations, each variable no positive atom binds ranging over its
+        domain, and the join plan; None when a relation is empty."""
         relations = self.relations(query, facts, seed)
         if relations is None:
-            return []
+            return None
         seeded = tuple(seed) if seed else ()
         bound = {c for r in relations for c in r.columns}
         for variable in query.all_variables():
@@ -377,13 +421,7 @@ class JoinEngine:
         if plan is None:
             edges = [frozenset(r.columns) for r in relations]
             plan = self._plans[(query, seeded)] = _Plan(join_tree(edges) if self.yannakakis else None)
-        if not relations:  # no variables: only ground negated atoms and inequalities
-            columns, rows = [], _Filters(query, facts).apply([], [()])
-        elif plan.tree is not None:
-            columns, rows = self._acyclic(relations, plan.tree, query, facts)
-        else:
-            columns, rows = self._greedy(relations, query, facts)
-        return _project(columns, rows, query)
+        return relations, plan
 
     def _acyclic(
         self, relations: list[Relation], tree: list[tuple[int, int]], query: Query, facts: FactBase
@@ -403,20 +441,6 @@ class JoinEngine:
             query,
             facts,
         )
-
-    def _greedy(
-        self, relations: list[Relation], query: Query, facts: FactBase
-    ) -> tuple[list[str], list[Row]]:
-        remaining = sorted(relations, key=lambda r: len(r.rows))
-        order = [remaining.pop(0)]
-        known = set(order[0].columns)
-        while remaining:
-            connected = [r for r in remaining if known.intersection(r.columns)]
-            chosen = (connected or remaining)[0]
-            remaining.remove(chosen)
-            order.append(chosen)
-            known.update(chosen.columns)
-        return self._join_in_order(order, query, facts)
 
     def _join_in_order(
         self, order: list[Relation], query: Query, facts: FactBase
@@ -444,6 +468,89 @@ class JoinEngine:
             columns.extend(relation.columns[i] for i in extra)
             rows = filters.apply(columns, joined)
         return columns, rows
+
+
+def _greedy_order(relations: list[Relation]) -> list[Relation]:
+    """The join order of a cyclic query: the smallest relation first, then always the
+    smallest one sharing a variable with what is joined (any, when none does)."""
+    remaining = sorted(relations, key=lambda r: len(r.rows))
+    order = [remaining.pop(0)]
+    known = set(order[0].columns)
+    while remaining:
+        connected = [r for r in remaining if known.intersection(r.columns)]
+        chosen = (connected or remaining)[0]
+        remaining.remove(chosen)
+        order.append(chosen)
+        known.update(chosen.columns)
+    return order
+
+
+class _NestedLoop:
+    """A join order run depth-first, one answer at a time (:meth:`JoinEngine.stream`):
+    each level probes its relation's index on the columns bound above it, and each of
+    the query's negated atoms and inequalities is tested at the first level that binds
+    all its variables, as the hash join does."""
+
+    def __init__(self, order: list[Relation], query: Query, facts: FactBase) -> None:
+        self.first = order[0].rows
+        self.query = query
+        columns = list(order[0].columns)
+        filters = _Filters(query, facts)
+        self.tests = [filters.tests(columns)]
+        #: Per level below the first: the index probed, the key of a row above, and
+        #: the columns a match adds (None: a semi-join level, which only tests).
+        self.levels: list[tuple[dict[object, list[Row]], Callable, Callable | None]] = []
+        for relation in order[1:]:
+            shared = [c for c in relation.columns if c in columns]
+            extra = [i for i, c in enumerate(relation.columns) if c not in columns]
+            index = relation.index(tuple(relation.columns.index(c) for c in shared))
+            key = _getter([columns.index(c) for c in shared])
+            pick = None
+            if len(extra) == 1:
+                only = extra[0]
+                pick = lambda match, only=only: (match[only],)
+            elif extra:
+                pick = _getter(extra)
+            self.levels.append((index, key, pick))
+            columns.extend(relation.columns[i] for i in extra)
+            self.tests.append(filters.tests(columns))
+        self.columns = columns
+
+    def rows(self) -> Iterator[Row]:
+        """The answers (projected on the answer variables, each once)."""
+        project, unique = _projection(self.columns, self.query)
+        seen: set[Row] | None = None if unique else set()
+        levels, tests = self.levels, self.tests
+        last = len(levels)
+        iterators: list[Iterator[Row]] = [iter(self.first)] * (last + 1)
+        depth = 0
+        while depth >= 0:
+            checks = tests[depth]
+            for row in iterators[depth]:
+                if checks and not all(check(row) for check in checks):
+                    continue
+                if depth == last:
+                    answer = row if project is None else project(row)
+                    if seen is not None:
+                        if answer in seen:
+                            continue
+                        seen.add(answer)
+                    yield answer
+                    continue
+                index, key, pick = levels[depth]
+                depth += 1
+                if pick is None:
+                    iterators[depth] = iter((row,) if key(row) in index else ())
+                else:
+                    iterators[depth] = _extended(row, pick, index.get(key(row), ()))
+                break
+            else:
+                depth -= 1
+
+
+def _extended(row: Row, pick: Callable, matches: list[Row]) -> Iterator[Row]:
+    for match in matches:
+        yield row + pick(match)
 
 
 def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
@@ -487,9 +594,27 @@ class _Filters:
         self.pending: list[tuple[str, object]] = [("neq", pair) for pair in query.distinct]
         self.pending += [("not", atom) for atom in query.negative]
 
-    def apply(self, columns: list[str], rows: list[Row]) -> list[Row]:
-        if not self.pending or not rows:
-            return rows
+    def tests(self, columns: list[str]) -> list[Callable[[Row], bool]]:
+        """The filters whose variables ``columns`` now bind, as tests on one row (and
+        no longer pending): the row-at-a-time form of :meth:`apply`."""
+        ready = self._take_ready(columns)
+        tests: list[Callable[[Row], bool]] = []
+        for kind, item in ready:
+            if kind == "neq":
+                left, right = item  # type: ignore[misc]
+                get_left, get_right = _term_getter(left, columns), _term_getter(right, columns)
+                tests.append(lambda row, a=get_left, b=get_right: a(row) != b(row))
+            else:
+                atom: Atom = item  # type: ignore[assignment]
+                getters = [_term_getter(t, columns) for t in atom.args]
+                tests.append(
+                    lambda row, p=atom.predicate, g=getters, holds=self.facts.holds: not holds(
+                        (p, *[get(row) for get in g])
+                    )
+                )
+        return tests
+
+    def _take_ready(self, columns: list[str]) -> list[tuple[str, object]]:
         ready = []
         waiting = []
         for kind, item in self.pending:
@@ -499,6 +624,12 @@ class _Filters:
             else:
                 waiting.append((kind, item))
         self.pending = waiting
+        return ready
+
+    def apply(self, columns: list[str], rows: list[Row]) -> list[Row]:
+        if not self.pending or not rows:
+            return rows
+        ready = self._take_ready(columns)
         for kind, item in ready:
             if kind == "neq":
                 left, right = item  # type: ignore[misc]
@@ -522,6 +653,27 @@ def _term_getter(term: str, columns: list[str]):  # noqa: ANN202
     return lambda row: term
 
 
+def _projection(columns: list[str], query: Query) -> tuple[Callable[[Row], Row] | None, bool]:
+    """A function from a joined row (over ``columns``) to its answer (the answer
+    variables' values; None when the row is its answer), and whether distinct rows give distinct answers (only a
+    projection that drops a column can repeat one)."""
+    picks: list[int | str] = []
+    for variable in query.variables:
+        term = query.same.get(variable, variable)
+        picks.append(columns.index(term) if is_variable(term) else term)
+    unique = len({p for p in picks if isinstance(p, int)}) == len(columns)
+    if not all(isinstance(p, int) for p in picks):
+        return (lambda row: tuple(row[p] if isinstance(p, int) else p for p in picks)), unique
+    if picks == list(range(len(columns))):
+        return None, unique
+    if not picks:
+        return (lambda row: ()), unique
+    if len(picks) == 1:
+        only = picks[0]
+        return (lambda row: (row[only],)), unique  # type: ignore[index]
+    return itemgetter(*picks), unique
+
+
 def _project(columns: list[str], rows: list[Row], query: Query) -> list[Row]:
     """The rows as bindings of the answer variables, each once. The rows are distinct
     already (every relation's are, and so are their joins'); only a projection that
@@ -529,20 +681,6 @@ def _project(columns: list[str], rows: list[Row], query: Query) -> list[Row]:
     does not depend on hashing."""
     if not rows:
         return []
-    picks = []
-    for variable in query.variables:
-        term = query.same.get(variable, variable)
-        picks.append(columns.index(term) if is_variable(term) else term)
-    if all(isinstance(p, int) for p in picks):
-        if picks == list(range(len(columns))):
-            answers = rows
-        elif not picks:
-            return [()]
-        else:
-            get = itemgetter(*picks)
-            answers = [get(row) for row in rows] if len(picks) > 1 else [(row[picks[0]],) for row in rows]  # type: ignore[index]
-    else:
-        answers = [tuple(row[p] if isinstance(p, int) else p for p in picks) for row in rows]
-    if len({p for p in picks if isinstance(p, int)}) < len(columns):
-        return list(dict.fromkeys(answers))
-    return answers
+    project, unique = _projection(columns, query)
+    answers = rows if project is None else list(map(project, rows))
+    return answers if unique else list(dict.fromkeys(answers))

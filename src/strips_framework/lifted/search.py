@@ -7,7 +7,17 @@ stored (:mod:`.space`) and expanded.
 ``lifted-gbfs`` is lazy greedy best-first search with preferred operators, as the ground
 ``lazy-gbfs`` (and Fast Downward's ``lazy_greedy([h], preferred=[h])``): a state's
 successors enter the open list under its own estimate and are made, tested for
-duplicates and evaluated only when they come out. ``lifted-bfws`` is eager greedy search
+duplicates and evaluated only when they come out. By default they are not even listed
+when the state is expanded: one *cursor* entry stands for all of them in the full open
+list and draws them from the query engine one at a time (:meth:`Successors.stream`), each
+time it comes out, going back to the head of its bucket while it has more; the preferred
+ones (a handful, named by the heuristic) go into the preferred list at once. The entries
+come out in the same order as when every successor is listed, so the search is the same
+(with the preferred list, up to the order of one state's preferred successors among
+themselves: the heuristic's, not the successor generator's), but an expansion no longer
+costs the state's whole branching: a state with thousands of applicable instances pays
+for the ones the search takes.
+``lifted-bfws`` is eager greedy search
 with width-based novelty, the shape of Powerlifted's ``alt-bfws1``: every successor is
 evaluated when generated, and two open lists alternate, one ordered by the estimate and
 one by (novelty, estimate) where a state is novel (1) when it holds an atom no earlier
@@ -18,11 +28,18 @@ from __future__ import annotations
 
 import math
 from collections import OrderedDict
+from collections.abc import Iterator
+from itertools import islice
 from typing import ClassVar
 
 from strips_framework.forward.budget import Budget, peak_mib
 from strips_framework.forward.openlists import AlternationOpenList, BestFirstOpenList, open_list
-from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedEstimator, LiftedState
+from strips_framework.lifted.components import (
+    ActionInstance,
+    GroundAtom,
+    LiftedEstimator,
+    LiftedState,
+)
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
 from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
@@ -54,6 +71,9 @@ class LiftedRun:
         #: successor's fact base is made from its parent's, and the states expanded next
         #: are mostly among them.
         self._recent: OrderedDict[int, tuple[LiftedState, FactBase]] = OrderedDict()
+        #: The cursors whose streams are live, oldest first: a stream holds its state's
+        #: fact base, so only the :data:`RECENT` last used keep theirs.
+        self._streams: OrderedDict[int, _Cursor] = OrderedDict()
 
     def parent(self, number: int) -> tuple[LiftedState, FactBase]:
         """State ``number`` and its fact base (made from scratch when not recent), now
@@ -74,27 +94,52 @@ class LiftedRun:
         if len(recent) > RECENT:
             recent.popitem(last=False)
 
+    def advance(self, cursor: _Cursor) -> bool:
+        """Draw ``cursor``'s next successor into ``cursor.step``; False when it has no
+        more. A cursor whose stream was let go makes it again and skips what it took."""
+        stream = cursor.stream
+        if stream is None:
+            stream = self.successors.stream(self.parent(cursor.parent)[1])
+            stream = cursor.stream = islice(stream, cursor.taken, None)
+        cursor.step = next(stream, None)
+        cursor.taken += 1
+        streams = self._streams
+        if cursor.step is None:
+            cursor.stream = None
+            streams.pop(cursor.parent, None)
+            return False
+        streams[cursor.parent] = cursor
+        streams.move_to_end(cursor.parent)
+        if len(streams) > RECENT:
+            streams.popitem(last=False)[1].stream = None
+        return True
+
     def child(
         self, parent: int, step: ActionInstance
-    ) -> tuple[LiftedState, bytes, int, set[GroundAtom], set[GroundAtom]]:
-        """The state ``step`` leads to from state ``parent``, packed, its path cost, and
-        the atoms it lost and gained (for :meth:`child_facts`). The packing is the
-        parent's with the few changed atoms' numbers taken out and put in, not the whole
-        state's numbers looked up again."""
+    ) -> tuple[bytes, int, set[GroundAtom], set[GroundAtom]]:
+        """The packing of the state ``step`` leads to from state ``parent``, its path
+        cost, and the atoms it lost and gained (for :meth:`child_facts`). The packing is
+        the parent's with the few changed atoms' numbers taken out and put in, not the
+        whole state's numbers looked up again; the state itself is made only for a
+        child that is no duplicate (:meth:`child_facts`)."""
         state, facts = self.parent(parent)
         removed, added, cost = self.successors.change(state, facts, step)
-        packed = self.space.repack(self.space.packed[parent], removed, added)
-        # One copy of the state: ``removed`` lies in it and ``added`` outside it.
-        return state ^ (removed | added), packed, self.space.g[parent] + cost, removed, added
+        packed = self.space.packed[parent]
+        if removed or added:
+            packed = self.space.repack(packed, removed, added)
+        return packed, self.space.g[parent] + cost, removed, added
 
     def child_facts(
-        self, parent: int, number: int, state: LiftedState, removed: set[GroundAtom], added: set[GroundAtom]
-    ) -> FactBase:
-        """The fact base of state ``number`` (``state``, a child of ``parent`` by
-        :meth:`child`), made from the parent's, and remembered."""
-        facts = self.successors.facts_after(state, self.parent(parent)[1], removed, added)
+        self, parent: int, number: int, removed: set[GroundAtom], added: set[GroundAtom]
+    ) -> tuple[LiftedState, FactBase]:
+        """State ``number``, a child of ``parent`` by :meth:`child`, and its fact base,
+        made from the parent's, and remembered."""
+        state, facts = self.parent(parent)
+        # One copy of the state: ``removed`` lies in it and ``added`` outside it.
+        state = state ^ (removed | added)
+        facts = self.successors.facts_after(state, facts, removed, added)
         self.remember(number, state, facts)
-        return facts
+        return state, facts
 
 
 class LiftedStrategy(Configurable):
@@ -162,9 +207,15 @@ class LiftedLazyGreedySearch(LiftedStrategy):
     options = (
         Option("preferred", bool, True, doc="a second open list for preferred operators"),
         Option("boost", int, 1000, minimum=0, doc="extra turns of that list on progress"),
-    )
+        Option(
+            "deferred", bool, True,
+            doc="draw a state's successors one at a time as the open list reaches them "
+            "(false: list them all when it is expanded)",
+        ),
+    )  # fmt: skip
     preferred: bool
     boost: int
+    deferred: bool
 
     def run(self, run: LiftedRun) -> int | None:
         successors, space, budget = run.successors, run.space, run.budget
@@ -193,18 +244,50 @@ class LiftedLazyGreedySearch(LiftedStrategy):
                         frontier.reward_progress()
                     best_h = h
                 run.remember(number, state, facts)
-                entries = [(number, step) for step in successors.applicable(facts)]
-                run.generated += len(entries)
-                frontier.push_all(h, entries, {(number, step) for step in preferred})
+                if self.deferred:
+                    cursor = _Cursor(h, number, successors.stream(facts))
+                    if run.advance(cursor):
+                        frontier.push(h, cursor)
+                    if preferred:
+                        frontier.push_preferred(h, [(number, step) for step in preferred])  # type: ignore[union-attr]
+                else:
+                    entries = [(number, step) for step in successors.applicable(facts)]
+                    run.generated += len(entries)
+                    frontier.push_all(h, entries, {(number, step) for step in preferred})
             while True:
                 if not frontier:
                     return None
-                parent, step = frontier.pop()
-                state, packed, g, removed, added = run.child(parent, step)
+                entry = frontier.pop()
+                if isinstance(entry, _Cursor):
+                    run.generated += 1
+                    parent, step = entry.parent, entry.step
+                    if run.advance(entry):
+                        frontier.push_front(entry.key, entry)
+                else:
+                    run.generated += self.deferred
+                    parent, step = entry
+                packed, g, removed, added = run.child(parent, step)
                 if packed not in space.ids:
                     number = space.add(packed, parent, step, g)
-                    facts = run.child_facts(parent, number, state, removed, added)
+                    state, facts = run.child_facts(parent, number, removed, added)
                     break
+
+
+class _Cursor:
+    """A lazy search's open-list entry for the successors of state ``parent`` (expanded
+    with estimate ``key``) not yet taken: ``step`` is the next, drawn from ``stream``
+    (None once the stream is let go, see :meth:`LiftedRun.advance`) after ``taken``
+    draws. ``generated`` counts the successors taken from cursors and the preferred list
+    (those listed at once count when listed)."""
+
+    __slots__ = ("key", "parent", "step", "stream", "taken")
+
+    def __init__(self, key: float, parent: int, stream: Iterator[ActionInstance]) -> None:
+        self.key = key
+        self.parent = parent
+        self.step: ActionInstance | None = None
+        self.stream: Iterator[ActionInstance] | None = stream
+        self.taken = 0
 
 
 class LiftedBFWS(LiftedStrategy):
@@ -264,11 +347,11 @@ class LiftedBFWS(LiftedStrategy):
             for step in successors.applicable(facts):
                 budget.check(run.expanded)  # each child is evaluated: a slow h adds up
                 run.generated += 1
-                child, packed, g, removed, added = run.child(number, step)
+                packed, g, removed, added = run.child(number, step)
                 if packed in space.ids:
                     continue
                 child_number = space.add(packed, number, step, g)
-                child_facts = run.child_facts(number, child_number, child, removed, added)
+                child, child_facts = run.child_facts(number, child_number, removed, added)
                 if successors.is_goal(child_facts):
                     return child_number
                 child_h = estimator.estimate(child)

@@ -10,6 +10,8 @@ atoms sit under it once for the whole search.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedState
 from strips_framework.lifted.query import FactBase, JoinEngine, QueryEngine
 from strips_framework.lifted.task import ActionSchema, LiftedTask, Rule
@@ -84,6 +86,24 @@ class Successors:
                     every.update(dict.fromkeys(answers(query, facts)))
                 found += [(name, args) for args in every]
         return found
+
+    def stream(self, facts: FactBase) -> Iterator[ActionInstance]:
+        """The instances :meth:`applicable` lists, in the same order, found one at a
+        time (:meth:`JoinEngine.stream`): what a search that takes a state's successors
+        as it needs them pays for the first few is not what all of them cost."""
+        stream = self.engine.stream
+        for schema in self.task.actions:
+            queries, name = schema.precondition, schema.name
+            if len(queries) == 1:
+                for args in stream(queries[0], facts):
+                    yield name, args
+            elif queries:
+                seen: set[tuple[str, ...]] = set()
+                for query in queries:
+                    for args in stream(query, facts):
+                        if args not in seen:
+                            seen.add(args)
+                            yield name, args
 
     def apply(
         self, state: LiftedState, facts: FactBase | None, instance: ActionInstance

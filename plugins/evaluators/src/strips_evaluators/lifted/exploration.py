@@ -16,8 +16,10 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Collection
 from heapq import heappop, heappush
+from itertools import product
 
-from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram, Step, passes
+from strips_evaluators.lifted.matching import CompiledPlan, compiled
+from strips_evaluators.lifted.program import AXIOM, Plan, Rule, RuleProgram
 from strips_framework.lifted.components import ActionInstance, GroundAtom
 
 #: A rule instance that achieved a fact: the rule, its fluent body facts, its slots.
@@ -35,6 +37,11 @@ class Exploration:
         self.unconditional: list[tuple[int, list[GroundAtom], Supporter]] = []
         for plan in program.unconditional:
             join(program, plan, None, {}, self._collect)
+        #: The plans each predicate triggers, with their compiled tests.
+        self._triggers: dict[str, list[tuple[Plan, CompiledPlan]]] = {
+            predicate: [(plan, compiled(program, plan)) for plan in plans]
+            for predicate, plans in program.triggers.items()
+        }
 
     def _collect(self, plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
         rule = plan.rule
@@ -55,17 +62,23 @@ class Exploration:
         program = self.program
         cost: dict[GroundAtom, float] = {}
         supporter: dict[GroundAtom, Supporter] = {}
-        heap: list[tuple[float, GroundAtom]] = []
-        for fact in state:
+        # The queue: facts by cost, first in first out within a cost, and a heap of the
+        # costs that have facts (comparing costs, not facts: ties are the rule here).
+        buckets: dict[float, list[GroundAtom]] = {0: sorted(state)}
+        keys: list[float] = [0]
+        for fact in buckets[0]:
             cost[fact] = 0
-            heap.append((0, fact))
         for value, heads, support in self.unconditional:
             for head in heads:
                 if value < cost.get(head, math.inf):
                     cost[head] = value
                     supporter[head] = support
-                    heap.append((value, head))
-        heap.sort()
+                    bucket = buckets.get(value)
+                    if bucket is None:
+                        buckets[value] = [head]
+                        heappush(keys, value)
+                    else:
+                        bucket.append(head)
         indexes: dict[str, list[tuple[tuple[int, ...], Index]]] = {
             predicate: [(positions, {}) for positions in all_positions]
             for predicate, all_positions in program.fluent_indexes.items()
@@ -80,7 +93,7 @@ class Exploration:
             return cost, supporter  # nothing to reach
         goals_left = len(goal) if goal else -1  # -1: never counts down to 0
 
-        triggers = program.triggers
+        triggers = self._triggers
 
         cost_get = cost.get
         cost_of = program.cost_of
@@ -105,27 +118,40 @@ class Exploration:
                         support = (rule, tuple(matched), tuple(slots))
                     cost[head] = value
                     supporter[head] = support
-                    heappush(heap, (value, head))
+                    bucket = buckets.get(value)
+                    if bucket is None:
+                        buckets[value] = [head]
+                        heappush(keys, value)
+                    else:
+                        bucket.append(head)
 
-        while heap:
-            value, fact = heappop(heap)
-            if cost[fact] != value:
-                continue  # reached more cheaply after it was queued
-            if fact in goal:
-                goals_left -= 1
-                if not goals_left:
-                    break
-            predicate = fact[0]
-            for positions, index in indexes.get(predicate, ()):
-                key = tuple([fact[i] for i in positions])
-                found = index.get(key)
-                if found is None:
-                    index[key] = [fact]
-                else:
-                    found.append(fact)
-            for plan in triggers.get(predicate, ()):
-                join(program, plan, fact, lookup, fire)
+        while keys:
+            value = keys[0]
+            bucket = buckets[value]
+            done = 0
+            while done < len(bucket):  # zero-cost rules add to it as it is read
+                fact = bucket[done]
+                done += 1
+                if cost[fact] != value:
+                    continue  # reached more cheaply after it was queued
+                if fact in goal:
+                    goals_left -= 1
+                    if not goals_left:
+                        return cost, supporter
+                predicate = fact[0]
+                for positions, index in indexes.get(predicate, ()):
+                    key = tuple([fact[i] for i in positions])
+                    found = index.get(key)
+                    if found is None:
+                        index[key] = [fact]
+                    else:
+                        found.append(fact)
+                for plan, functions in triggers.get(predicate, ()):
+                    join(program, plan, fact, lookup, fire, functions)
+            del buckets[value]
+            heappop(keys)
         return cost, supporter
+
 
 def join(
     program: RuleProgram,
@@ -133,31 +159,49 @@ def join(
     fact: GroundAtom | None,
     lookup: dict[tuple[str, tuple[int, ...]], Index],
     emit: Callable[[Plan, list, list[GroundAtom]], None],
+    functions: CompiledPlan | None = None,
 ) -> None:
     """Every completion of ``plan`` with its trigger bound to ``fact`` (no trigger when
     None), fluent atoms matched in ``lookup`` (indexes by ``(predicate, positions)``):
-    ``emit(plan, slots, matched)`` with the fluent facts matched, trigger first."""
+    ``emit(plan, slots, matched)`` with the fluent facts matched, trigger first. Each
+    candidate fact is matched by the step's compiled function (``functions``, made
+    here when not given: :mod:`.matching`)."""
+    if functions is None:
+        functions = compiled(program, plan)
     slots: list = list(plan.rule.template)
-    static = program.static_facts
+    for slot, value in functions.preset:
+        slots[slot] = value
     matched: list[GroundAtom] = []
     if fact is not None:
-        if not _match(plan.trigger, fact, slots, static):
+        if not functions.trigger(fact, slots):  # type: ignore[misc]
             return
         matched.append(fact)
     steps = plan.steps
+    final = functions.final
+    free = functions.free
+    if not steps and not free:  # one atom: nothing to join
+        if final is None or final(slots):
+            emit(plan, slots, matched)
+        return
+    matchers = functions.steps
     last = len(steps)
     static_indexes = program.static_indexes
-
-    simple = not plan.free and not plan.final_checks
+    simple = not free and final is None
     probes = plan.probes
 
     def extend(depth: int) -> None:
         if depth == last:
             if simple:
                 emit(plan, slots, matched)
-            else:
-                for _ in program.instances(plan, slots):
+            elif not free:
+                if final(slots):  # type: ignore[misc]
                     emit(plan, slots, matched)
+            else:  # every assignment of the free slots over their types' objects
+                for values in product(*functions.domains):
+                    for slot, value in zip(free, values):
+                        slots[slot] = value
+                    if final is None or final(slots):
+                        emit(plan, slots, matched)
             return
         for later in probes[depth]:
             probe = steps[later]
@@ -172,27 +216,20 @@ def join(
         candidates = index.get(tuple([slots[s] for s in step.key]))
         if not candidates:
             return
-        for candidate in candidates:
-            if step.before_trigger and candidate == fact:
-                continue
-            if _match(step, candidate, slots, static):
-                if step.fluent:
+        match = matchers[depth]
+        skip = fact if step.before_trigger else None
+        if step.fluent:
+            for candidate in candidates:
+                if candidate is not skip and candidate != skip and match(candidate, slots):
                     matched.append(candidate)
                     extend(depth + 1)
                     matched.pop()
-                else:
+        else:
+            for candidate in candidates:
+                if match(candidate, slots):
                     extend(depth + 1)
 
     extend(0)
-
-
-def _match(step: Step, fact: GroundAtom, slots: list, static: dict) -> bool:
-    for position, slot in step.binds:
-        slots[slot] = fact[position]
-    for position, slot in step.repeats:
-        if fact[position] != slots[slot]:
-            return False
-    return not step.checks or passes(step.checks, slots, static)
 
 
 def relaxed_plan(

@@ -23,8 +23,7 @@ atom plus one.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
-from itertools import product
+from collections.abc import Callable, Iterable
 from operator import itemgetter
 
 from strips_framework.errors import InputError
@@ -258,11 +257,13 @@ class RuleProgram:
         self.fluent_goal: tuple[GroundAtom, ...] = ()
         #: Goal facts of static predicates that do not hold: no state reaches the goal.
         self.static_goal_missing = 0
+        #: The plans' compiled tests by plan identity (:func:`.matching.compiled`).
+        self.compiled: dict[int, object] = {}
 
     def _index_static_facts(self) -> None:
         """Fills the static indexes the plans use (once every rule is added)."""
         for (predicate, positions), index in self.static_indexes.items():
-            for fact in self.static_facts.get(predicate, ()):
+            for fact in sorted(self.static_facts.get(predicate, ())):  # no order from hashing
                 index.setdefault(tuple([fact[i] for i in positions]), []).append(fact)
 
     def cost_of(self, rule: Rule, slots: list[str]) -> int:
@@ -360,6 +361,8 @@ class RuleProgram:
         domains = {i: self.objects_of(p.types) for i, p in enumerate(everything)}
         # Hidden variables count as bound: the plans never enumerate them.
         variables = [i for i, p in enumerate(everything) if p.name not in hidden]
+        if any(not domains[i] for i in variables):
+            return  # a variable of a type without objects: the rule has no instance
         fluent = [i for i, (predicate, _) in enumerate(atoms) if predicate not in self.static]
         if action == AXIOM and derivation:
             self.derivations.append(self._plan(rule, atoms, None, checks, domains, variables))
@@ -493,21 +496,6 @@ class RuleProgram:
             fluent=fluent,
             before_trigger=before,
         )
-
-    def instances(self, plan: Plan, slots: list[str]) -> Iterator[None]:
-        """Complete a binding whose atoms are all matched: every assignment of the free
-        slots (over their types' objects) that passes the final checks, written into
-        ``slots``; one ``None`` per assignment."""
-        if not plan.free:
-            if passes(plan.final_checks, slots, self.static_facts):
-                yield None
-            return
-        for values in product(*plan.domains):
-            for slot, value in zip(plan.free, values):
-                slots[slot] = value
-            if passes(plan.final_checks, slots, self.static_facts):
-                yield None
-
 
 class Program(RuleProgram):
     """The relaxed program of a PDDL task (see the module docstring)."""
@@ -727,22 +715,3 @@ def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list]
         atom = (name,)
         return lambda slots: atom
     return itemgetter(name_slot, *terms)
-
-
-def passes(checks: tuple[Check, ...], slots: list[str], static: dict[str, set[GroundAtom]]) -> bool:
-    for check in checks:
-        kind = check.kind
-        if kind == "type":
-            if slots[check.slots[0]] not in check.domain:
-                return False
-        elif kind == "!=":
-            if slots[check.slots[0]] == slots[check.slots[1]]:
-                return False
-        elif kind == "=":
-            if slots[check.slots[0]] != slots[check.slots[1]]:
-                return False
-        elif ((check.predicate, *[slots[s] for s in check.slots]) in static[check.predicate]) != (
-            kind == "present"
-        ):
-            return False
-    return True
