@@ -39,3 +39,17 @@ def test_the_json_document_has_the_documented_fields(monkeypatch, capsys, args, 
     assert document["schema"] == SCHEMA == "strips-result/1"
     assert document["family"] == family
     assert set(document["statistics"]) == _statistics_fields(family)
+
+
+def test_statistics_in_json_keep_field_order_and_round_only_their_float_figures():
+    from strips_framework.forward.result import ForwardStatistics
+    from strips_framework.lifted.result import LiftedStatistics
+
+    forward = ForwardStatistics(expanded=3, search_seconds=0.123456789, peak_memory_mib=17.84)
+    assert list(forward.as_dict()) == list(ForwardStatistics.FIELDS)
+    assert forward.as_dict()["expanded"] == 3
+    assert forward.as_dict()["search_seconds"] == 0.1235
+    assert forward.as_dict()["peak_memory_mib"] == 17.8
+    lifted = LiftedStatistics(states=2, bytes_per_state=173.96, setup_seconds=1.000049)
+    assert list(lifted.as_dict()) == list(LiftedStatistics.FIELDS)
+    assert (lifted.as_dict()["bytes_per_state"], lifted.as_dict()["setup_seconds"]) == (174.0, 1.0)

@@ -1,11 +1,12 @@
 """What every search returns, whichever family it belongs to: one status vocabulary and
 one result type.
 
-The two families (means-ends and model-A* over first-order world models; forward search
-over ground tasks) count different things, so each keeps its own statistics record
-(:class:`~strips_framework.means_ends.result.WorldModelStatistics`,
-:class:`~strips_framework.forward.result.ForwardStatistics`), nested in the one
-:class:`Result`; the status, the plan, its cost and the run's time mean the same for both.
+The families (means-ends and model-A* over first-order world models; forward search over
+ground tasks; lifted search over PDDL tasks) count different things, so each keeps its own
+statistics record (:class:`~strips_framework.means_ends.result.WorldModelStatistics`,
+:class:`~strips_framework.forward.result.ForwardStatistics`,
+:class:`~strips_framework.lifted.result.LiftedStatistics`), nested in the one
+:class:`Result`; the status, the plan, its cost and the run's time mean the same for all.
 """
 
 from __future__ import annotations
@@ -64,6 +65,23 @@ class FamilyStatistics(Protocol):
     def lines(self) -> list[str]:
         """The figures as ``name: value`` lines for the text output."""
         ...
+
+
+class CountedStatistics(Record):
+    """Statistics whose JSON form is their fields in order: integer counts as they are,
+    float figures rounded to :attr:`DIGITS` places. The forward and lifted searches'
+    records are such; a record with derived figures writes its own ``as_dict``."""
+
+    __slots__ = ()
+    #: Decimal places of each float field in :meth:`as_dict`.
+    DIGITS: ClassVar[dict[str, int]] = {}
+
+    def as_dict(self) -> dict[str, float | int]:
+        digits = self.DIGITS
+        return {
+            name: round(value, digits[name]) if name in digits else value
+            for name, value in zip(self.FIELDS, self._values(), strict=True)
+        }
 
 
 class Result(Record):

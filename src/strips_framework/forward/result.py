@@ -3,16 +3,17 @@ the counts Fast Downward reports."""
 
 from __future__ import annotations
 
-from strips_framework.records import Record
+from strips_framework.result import CountedStatistics
 
 
-class ForwardStatistics(Record):
+class ForwardStatistics(CountedStatistics):
     """Counts as Fast Downward reports them: ``expanded`` states (successors generated),
     ``evaluated`` heuristic calls, ``generated`` successor states, ``reopened`` closed
     states reached again more cheaply; ``dead_ends`` states the heuristic proved hopeless.
     Times are wall-clock seconds; ``peak_memory_mib`` is the process's peak resident set."""
 
     family = "forward"  # a class attribute, not a field (FamilyStatistics.family)
+    DIGITS = {"parse_seconds": 4, "ground_seconds": 4, "search_seconds": 4, "peak_memory_mib": 1}
 
     expanded: int
     evaluated: int
@@ -65,21 +66,6 @@ class ForwardStatistics(Record):
         self.ground_seconds = ground_seconds
         self.search_seconds = search_seconds
         self.peak_memory_mib = peak_memory_mib
-
-    def as_dict(self) -> dict[str, float | int]:
-        return {
-            "expanded": self.expanded,
-            "evaluated": self.evaluated,
-            "generated": self.generated,
-            "reopened": self.reopened,
-            "dead_ends": self.dead_ends,
-            "facts": self.facts,
-            "operators": self.operators,
-            "parse_seconds": round(self.parse_seconds, 4),
-            "ground_seconds": round(self.ground_seconds, 4),
-            "search_seconds": round(self.search_seconds, 4),
-            "peak_memory_mib": round(self.peak_memory_mib, 1),
-        }
 
     def lines(self) -> list[str]:
         """``expanded: N`` and the like, one a line, as Fast Downward users' scripts look

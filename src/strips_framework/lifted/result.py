@@ -4,10 +4,10 @@ stored and what each costs in memory."""
 
 from __future__ import annotations
 
-from strips_framework.records import Record
+from strips_framework.result import CountedStatistics
 
 
-class LiftedStatistics(Record):
+class LiftedStatistics(CountedStatistics):
     """``expanded``, ``evaluated``, ``generated`` and ``dead_ends`` as Fast Downward
     counts them; ``states`` stored, ``bytes_per_state`` what each costs in the state
     space (:meth:`~strips_framework.lifted.space.LiftedStateSpace.bytes_per_state`),
@@ -16,6 +16,13 @@ class LiftedStatistics(Record):
     set-up); ``peak_memory_mib`` is the process's peak resident set."""
 
     family = "lifted"  # a class attribute, not a field (FamilyStatistics.family)
+    DIGITS = {
+        "bytes_per_state": 1,
+        "parse_seconds": 4,
+        "setup_seconds": 4,
+        "search_seconds": 4,
+        "peak_memory_mib": 1,
+    }
 
     expanded: int
     evaluated: int
@@ -72,22 +79,6 @@ class LiftedStatistics(Record):
         self.setup_seconds = setup_seconds
         self.search_seconds = search_seconds
         self.peak_memory_mib = peak_memory_mib
-
-    def as_dict(self) -> dict[str, float | int]:
-        return {
-            "expanded": self.expanded,
-            "evaluated": self.evaluated,
-            "generated": self.generated,
-            "dead_ends": self.dead_ends,
-            "states": self.states,
-            "bytes_per_state": round(self.bytes_per_state, 1),
-            "atoms": self.atoms,
-            "actions": self.actions,
-            "parse_seconds": round(self.parse_seconds, 4),
-            "setup_seconds": round(self.setup_seconds, 4),
-            "search_seconds": round(self.search_seconds, 4),
-            "peak_memory_mib": round(self.peak_memory_mib, 1),
-        }
 
     def lines(self) -> list[str]:
         """``expanded: N`` and the like, one a line, as for the forward search."""
