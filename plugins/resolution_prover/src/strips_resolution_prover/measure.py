@@ -60,8 +60,9 @@ class Run(Record):
     seconds: float  # CPU seconds proving (E: the process's)
     process_seconds: float  # CPU seconds of the whole process, start-up included
     answers: str | None
+    effort: int | None  # the effort used (ours: given clauses); E's is not read
 
-    __slots__ = ("status", "seconds", "process_seconds", "answers")
+    __slots__ = ("answers", "effort", "process_seconds", "seconds", "status")
 
     def __init__(
         self,
@@ -69,11 +70,13 @@ class Run(Record):
         seconds: float,
         process_seconds: float,
         answers: str | None = None,
+        effort: int | None = None,
     ) -> None:
         self.status = status
         self.seconds = seconds
         self.process_seconds = process_seconds
         self.answers = answers
+        self.effort = effort
 
 
 def find_eprover(name: str = "eprover") -> str | None:
@@ -110,8 +113,14 @@ def run_ours(path: Path, seconds: float, effort: int | None, config: Path | None
         document = json.loads(completed.stdout)
     except json.JSONDecodeError:
         return Run("Error", used, used)
-    proving = document["statistics"]["cpu_seconds"]
-    return Run(document["status"], proving, used, document["answers"])
+    statistics = document["statistics"]
+    return Run(
+        document["status"],
+        statistics["cpu_seconds"],
+        used,
+        document["answers"],
+        statistics["effort_used"],
+    )
 
 
 def run_e(eprover: str, path: Path, seconds: float) -> Run:
@@ -255,11 +264,13 @@ def main(argv: list[str] | None = None) -> int:
         print(f"E not found ({args.eprover!r} not on PATH, no eprover package)", file=sys.stderr)
         return 2
     statuses = expected_statuses(args.folders, args.manifest)
-    header = "| problem | expected | ours | s | process s |"
+    header = "| problem | expected | ours | given | s | process s |"
     header += " E | s | answers | E's answers | answer |" if eprover else " answers |"
     print(header)
     print("|" + "---|" * (header.count("|") - 1))
     total = right = wrong = e_right = questions = answered = 0
+    given = 0
+    cpu = 0.0
     ratios: list[float] = []
     process_ratios: list[float] = []
     for path in _problems(args.folders):
@@ -267,9 +278,12 @@ def main(argv: list[str] | None = None) -> int:
         expected = expected_of(name, statuses)
         ours = run_ours(path, args.time, args.effort, args.config)
         total += 1
+        given += ours.effort or 0
+        cpu += ours.seconds
         right += ours.status == expected
         wrong += ours.status in DECIDED and expected is not None and ours.status != expected
-        row = f"| {name} | {expected or '?'} | {ours.status} | {ours.seconds:.2f} |"
+        row = f"| {name} | {expected or '?'} | {ours.status} | {ours.effort} |"
+        row += f" {ours.seconds:.2f} |"
         row += f" {ours.process_seconds:.2f} |"
         if eprover is None:
             print(f"{row} {ours.answers or ''} |", flush=True)
@@ -291,6 +305,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{row} {verdict} |", flush=True)
     e_line = f"; E: {e_right}/{total} right" if eprover else ""
     print(f"\nours: {right}/{total} right, {wrong} wrong{e_line}")
+    print(f"ours in total: {given} given clauses (the effort used), {cpu:.2f} CPU s proving")
     if questions:
         print(
             f"questions answered correctly (the same as E's, proved by E, or none where "

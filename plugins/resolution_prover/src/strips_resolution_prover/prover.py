@@ -83,7 +83,7 @@ from strips_resolution_prover.pclause import (
     term_depth,
 )
 from strips_resolution_prover.axiom_relevance import relevant_axioms
-from strips_resolution_prover.selection import ClauseQueue, unit_preference
+from strips_resolution_prover.selection import ClauseQueue, refined_picks, unit_preference
 from strips_resolution_prover.subsumption import MatchWork, SubsumptionIndex
 
 #: The values of ``goal_selection`` (see :class:`ResolutionProver`).
@@ -96,7 +96,10 @@ MATCH_STEPS_PER_GIVEN = 1000
 class ResolutionProver(Configurable):
     """Binary resolution with factoring, paramodulation, subsumption and answer extraction.
 
-    Options: ``pick_given_ratio`` weight-queue picks per age-queue pick; ``unit_preference``
+    Options: ``pick_given_ratio`` weight-queue picks per age-queue pick;
+    ``refined_weight_picks`` picks by refined weight (the heaviest literals at 1.5 times)
+    after those (``None``: 4 in saturation, none under a set of support,
+    :func:`~.selection.refined_picks`); ``unit_preference``
     is the weight-queue penalty per literal beyond the first (0: none; ``None``: 4 on tasks
     with axioms, 0 without, :func:`~.selection.unit_preference`); ``set_of_support``
     false lets axioms be resolved with each other too (goal descendants are still preferred),
@@ -131,6 +134,8 @@ class ResolutionProver(Configurable):
 
     options = (
         Option("pick_given_ratio", int, 5, minimum=1, doc="weight-queue picks per age-queue pick"),
+        Option("refined_weight_picks", int, None, minimum=0, optional=True,
+               doc="picks by refined weight per age-queue pick (unset: by the calculus)"),
         Option("unit_preference", int, None, minimum=0, optional=True,
                doc="weight-queue penalty per literal beyond the first (unset: by the task)"),
         Option("set_of_support", bool, True, doc="resolve axioms only with goal descendants"),
@@ -143,6 +148,7 @@ class ResolutionProver(Configurable):
                doc="the goal literals resolved upon (SLD on Horn tasks: 'fewest')"),
     )
     pick_given_ratio: int
+    refined_weight_picks: int | None
     unit_preference: int | None
     set_of_support: bool
     max_weight: int | None
@@ -542,7 +548,9 @@ class _Saturation:
             has_parameter(atom) for clause in negated_goal for _, atom in clause.literals
         )
         self.queue = ClauseQueue(
-            options.pick_given_ratio, unit_preference(options.unit_preference, has_axioms)
+            options.pick_given_ratio,
+            unit_preference(options.unit_preference, has_axioms),
+            refined_picks(options.refined_weight_picks, self.selecting),
         )
         self.has_axioms = has_axioms
         self.uses_equality = axioms.uses_equality or mentions_equality(
