@@ -4,9 +4,11 @@ from __future__ import annotations
 
 import signal
 import subprocess
+import sys
 import time
 import tomllib
 from collections import Counter
+from pathlib import Path
 
 from strips_framework.bench.configs import PlannerConfig, RunFiles, strips_command
 from strips_framework.cli.main import main
@@ -152,13 +154,42 @@ one = ["{PUSH_ONE_BOX}"]
     assert runner.returncode == 130, err
     assert "continue with --resume" in err
     assert [row["config"] for row in read_rows(out)] == ["quick"]
-    hung = subprocess.run(["pgrep", "-f", f"fake_planner.py hang {PUSH_ONE_BOX}"],
-                          check=False, capture_output=True, text=True).stdout.split()
+    hung = _running(f"fake_planner.py hang {PUSH_ONE_BOX}")
     assert hung == []  # the hung child was killed with the runner
     # 'slow' has no row yet, so its command may change (not 'quick''s, nor the limits).
     matrix.write_text(matrix.read_text().replace(fake("hang"), fake("solve")))
     assert main(["bench", str(matrix), "-o", str(out), "--resume", "--no-progress"]) == 0
     assert Counter(row["config"] for row in read_rows(out)) == {"quick": 1, "slow": 1}
+
+
+def _running(fragment: str) -> list[int]:
+    """The processes whose command line holds ``fragment``, read from /proc (as
+    ``pgrep -f``, which a bare machine may lack)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            command = (entry / "cmdline").read_bytes().replace(b"\0", b" ").decode(errors="replace")
+        except OSError:  # the process ended while we looked
+            continue
+        if fragment in command:
+            found.append(int(entry.name))
+    return found
+
+
+def test_running_finds_a_process_by_its_command_line():
+    marker = "strips-test-marker-4711"
+    child = subprocess.Popen([sys.executable, "-c", "import sys, time; time.sleep(60)", marker])
+    try:
+        deadline = time.monotonic() + 30
+        while child.pid not in _running(marker) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert _running(marker) == [child.pid]
+    finally:
+        child.kill()
+        child.wait()
+    assert _running(marker) == []
 
 
 def test_the_matrixs_time_limit_reaches_the_planner(tmp_path):
