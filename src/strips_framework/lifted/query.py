@@ -392,8 +392,11 @@ class JoinEngine:
             yield from _project([], _Filters(query, facts).apply([], [()]), query)
             return
         if plan.tree is not None:
+            narrowed = _narrowed(relations, plan.tree)
+            if narrowed is None:
+                return
             root = plan.tree[-1][1] if plan.tree else 0
-            order = [relations[root]] + [relations[child] for child, _ in reversed(plan.tree)]
+            order = [narrowed[root]] + [narrowed[child] for child, _ in reversed(plan.tree)]
         else:
             order = _greedy_order(relations)
         yield from _NestedLoop(order, query, facts).rows()
@@ -571,6 +574,36 @@ def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_r
             kept.sort()
             return kept
     return _semijoin(relation.columns, rows, other, other_rows)
+
+
+def _narrowed(relations: list[Relation], tree: list[tuple[int, int]]) -> list[Relation] | None:
+    """The relations of an acyclic query after the upward semi-join pass of
+    :meth:`JoinEngine.stream`, None when it leaves a relation empty (the query has no
+    answer). Two unreduced relations are first tested for a common key of their indexes
+    on the shared columns (a disjointness test in C over the smaller key set, no row
+    visited), so an action with no instance is refuted without a scan of its large
+    relations (e.g. the trucks' ``at`` atoms against the packages' places); a relation
+    is replaced by its reduced rows (in filing order) only when the other side has many
+    times fewer keys, the cost following those keys; otherwise the nested loop meets
+    its dead ends itself."""
+    rows = [r.rows for r in relations]
+    for child, parent in tree:
+        ours, theirs = relations[parent], relations[child]
+        if rows[parent] is ours.rows and rows[child] is theirs.rows:
+            shared = [c for c in ours.columns if c in theirs.columns]
+            if not shared:
+                continue
+            mine = ours.index(tuple(ours.columns.index(c) for c in shared))
+            keys = theirs.index(tuple(theirs.columns.index(c) for c in shared)).keys()
+            if mine.keys().isdisjoint(keys):
+                return None
+            if len(keys) * 8 < len(mine):
+                rows[parent] = sorted(row for key in keys if key in mine for row in mine[key])
+        else:
+            rows[parent] = _reduce(ours, rows[parent], theirs.columns, rows[child])
+            if not rows[parent]:
+                return None
+    return [r if rows[i] is r.rows else Relation(r.columns, rows[i]) for i, r in enumerate(relations)]
 
 
 def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
