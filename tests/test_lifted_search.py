@@ -599,3 +599,40 @@ def test_a_cursor_whose_stream_was_let_go_resumes_where_it_stopped(monkeypatch: 
     monkeypatch.setattr(search, "RECENT", 1)
     assert _lazy_trace(pddl, "goal-count", preferred=False) == kept
     assert kept[0] == Status.SOLVED and kept[2] > 20
+
+
+_DEPOT = """(define (domain depot) (:requirements :strips)
+ (:predicates (at ?v ?p) (parcel ?k ?p) (in ?k ?v))
+ (:action load :parameters (?k ?v ?p) :precondition (and (parcel ?k ?p) (at ?v ?p))
+  :effect (and (not (parcel ?k ?p)) (in ?k ?v))))"""
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_a_stream_narrowed_to_a_few_keys_draws_the_listed_instances_in_order(seed: int) -> None:
+    """Many vehicles, a few parcels: the stream narrows the vehicles' ``at`` relation to
+    the parcels' places (the other side has many times fewer keys) or refutes ``load``
+    when no place is shared; the narrowed rows must be the listed instances' order (the
+    relation's filing order, not the order of the parcels' keys)."""
+    rng = random.Random(seed)
+    places = [f"p{i:02d}" for i in range(80)]
+    vehicles = [f"v{i:03d}" for i in range(120)]
+    parcels = [f"k{i}" for i in range(rng.randint(2, 6))]
+    spots = places if seed % 4 else places[:1]
+    where = [rng.choice(spots) for _ in vehicles]
+    init = [f"(at {v} {p})" for v, p in zip(vehicles, where)]
+    shared = where if seed % 4 else places[1:]  # where the first parcel lies
+    init += [f"(parcel {k} {rng.choice(places[1:] if seed % 4 == 0 else places)})" for k in parcels[1:]]
+    init.append(f"(parcel {parcels[0]} {rng.choice(shared)})")
+    objects = " ".join(places + vehicles + parcels)
+    problem = f"(define (problem p) (:domain depot) (:objects {objects}) (:init {' '.join(init)}) (:goal (in k0 v000)))"
+    task = LiftedTask(parse_task(_DEPOT, problem, "depot", "p"))
+    successors = Successors(task)
+    state = task.init
+    facts = successors.facts(state)
+    listed = successors.applicable(facts)
+    assert list(successors.stream(facts)) == listed
+    assert bool(listed) == bool(seed % 4)  # every fourth: no parcel where a vehicle is
+    for step in listed[:2]:
+        removed, added, _ = successors.change(state, facts, step)
+        child_facts = successors.facts_after(state ^ (removed | added), facts, removed, added)
+        assert list(successors.stream(child_facts)) == successors.applicable(child_facts)
