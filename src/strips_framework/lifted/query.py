@@ -65,6 +65,13 @@ class Relation:
             self._indexes[positions] = found
         return found
 
+    def renamed(self, columns: tuple[str, ...]) -> Relation:
+        """The same rows over other variables, sharing this relation's rows and indexes
+        (an index built through either is built for both)."""
+        view = Relation(columns, self.rows)
+        view._indexes = self._indexes
+        return view
+
     def changed(self, removed: Sequence[Row], added: Sequence[Row]) -> Relation:
         """This relation less the rows ``removed`` (which it holds) and with the rows
         ``added`` (which it lacks), rows and built indexes kept in their sorted filing
@@ -213,7 +220,8 @@ class FactBase:
             else:  # a ground atom: held or not, no scan
                 relation = Relation((), [()] if pattern.ground in self.atoms else [])
             found = self._relations[pattern.key] = (pattern, relation)
-        return found[1]
+        relation = found[1]
+        return relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
 
 
 #: The atoms of one predicate a state lost and gained.
@@ -224,13 +232,15 @@ class Pattern:
     """A query atom compiled for matching: the objects it needs at which positions, its
     repeated variables, its variables' domains, and which positions become the
     relation's columns (each variable's first occurrence, in order). ``key`` is the same
-    for equal atoms with the same domains, so a state matches each pattern once."""
+    for atoms that differ at most in their variables' names (same predicate, objects,
+    repeats and domains), so a state matches each pattern once and keeps one relation
+    for, e.g., logistics' ``(at ?truck ?loc)`` and ``(at ?truck ?from)``: one copy to
+    update when a truck moves."""
 
     __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size", "ground")
 
     def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
         self.predicate = atom.predicate
-        self.key = (atom.predicate, atom.args, tuple(id(domains.get(a)) for a in atom.args))
         columns: list[str] = []
         self.taken: list[int] = []
         self.checks: list[tuple[int, str]] = []  # position, object
@@ -248,6 +258,8 @@ class Pattern:
                 if domain is not None:
                     self.typed.append((position, domain))
         self.columns = tuple(columns)
+        shape = tuple(columns.index(t) if t in columns else t for t in atom.args)
+        self.key = (atom.predicate, shape, tuple(id(domains.get(a)) for a in atom.args))
         self.size = len(atom.args) + 1
         #: The atom itself when it has no variables (its relation is a membership test).
         self.ground: GroundAtom | None = None if columns else (atom.predicate, *atom.args)
