@@ -15,12 +15,13 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.prover import JoinProver, ProverEngine
-from strips_framework.lifted.query import FactBase, JoinEngine, Relation, _reduce, _semijoin
+from strips_framework.lifted.query import FactBase, JoinEngine, Pattern, Relation, _reduce, _semijoin
 from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch, _Novelty
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
 from strips_framework.limits import Limits
 from strips_framework.pddl import PddlTask, load_task, parse_task
+from strips_framework.pddl.formulas import Atom
 from strips_framework.pddl.validate import validate_plan
 from strips_framework.plugin.registry import Registry
 from strips_framework.result import Status
@@ -599,3 +600,67 @@ def test_a_cursor_whose_stream_was_let_go_resumes_where_it_stopped(monkeypatch: 
     monkeypatch.setattr(search, "RECENT", 1)
     assert _lazy_trace(pddl, "goal-count", preferred=False) == kept
     assert kept[0] == Status.SOLVED and kept[2] > 20
+
+
+_DEPOT = """(define (domain depot) (:requirements :strips)
+ (:predicates (at ?v ?p) (parcel ?k ?p) (in ?k ?v))
+ (:action load :parameters (?k ?v ?p) :precondition (and (parcel ?k ?p) (at ?v ?p))
+  :effect (and (not (parcel ?k ?p)) (in ?k ?v))))"""
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_a_stream_narrowed_to_a_few_keys_draws_the_listed_instances_in_order(seed: int) -> None:
+    """Many vehicles, a few parcels: the stream narrows the vehicles' ``at`` relation to
+    the parcels' places (the other side has many times fewer keys) or refutes ``load``
+    when no place is shared; the narrowed rows must be the listed instances' order (the
+    relation's filing order, not the order of the parcels' keys)."""
+    rng = random.Random(seed)
+    places = [f"p{i:02d}" for i in range(80)]
+    vehicles = [f"v{i:03d}" for i in range(120)]
+    parcels = [f"k{i}" for i in range(rng.randint(2, 6))]
+    spots = places if seed % 4 else places[:1]
+    where = [rng.choice(spots) for _ in vehicles]
+    init = [f"(at {v} {p})" for v, p in zip(vehicles, where)]
+    shared = where if seed % 4 else places[1:]  # where the first parcel lies
+    init += [f"(parcel {k} {rng.choice(places[1:] if seed % 4 == 0 else places)})" for k in parcels[1:]]
+    init.append(f"(parcel {parcels[0]} {rng.choice(shared)})")
+    objects = " ".join(places + vehicles + parcels)
+    problem = f"(define (problem p) (:domain depot) (:objects {objects}) (:init {' '.join(init)}) (:goal (in k0 v000)))"
+    task = LiftedTask(parse_task(_DEPOT, problem, "depot", "p"))
+    successors = Successors(task)
+    state = task.init
+    facts = successors.facts(state)
+    listed = successors.applicable(facts)
+    assert list(successors.stream(facts)) == listed
+    assert bool(listed) == bool(seed % 4)  # every fourth: no parcel where a vehicle is
+    for step in listed[:2]:
+        removed, added, _ = successors.change(state, facts, step)
+        child_facts = successors.facts_after(state ^ (removed | added), facts, removed, added)
+        assert list(successors.stream(child_facts)) == successors.applicable(child_facts)
+
+
+def test_patterns_differing_only_in_variable_names_share_one_relation() -> None:
+    """``(at ?t ?l)`` and ``(at ?t ?f)`` over the same domains are one relation (so a
+    moved truck is updated once), each seen over its own variables; another domain, an
+    object or a repeated variable is another relation; a child's shared relation is the
+    one made from scratch."""
+    trucks, places = frozenset({"t1", "t2", "t3"}), frozenset({"a", "b", "c"})
+    domains = {"?t": trucks, "?l": places, "?f": places, "?p": frozenset({"k"}), "?x": None}
+    atoms = [("at", "t1", "a"), ("at", "t2", "b"), ("at", "t3", "c"), ("at", "k", "a"), ("at", "b", "b")]
+    facts = FactBase(atoms)
+
+    def relation(base: FactBase, *args: str) -> Relation:
+        return base.relation(Pattern(Atom("at", args), {v: d for v, d in domains.items() if d is not None}))
+
+    loc, origin = relation(facts, "?t", "?l"), relation(facts, "?t", "?f")
+    assert (loc.columns, origin.columns) == (("?t", "?l"), ("?t", "?f"))
+    assert loc.rows is origin.rows and loc.rows == [("t1", "a"), ("t2", "b"), ("t3", "c")]
+    assert relation(facts, "?p", "?l").rows == [("k", "a")]
+    assert relation(facts, "?x", "?x").rows == [("b",)]
+    assert relation(facts, "?t", "a").rows == [("t1",)]
+    assert len(facts._relations) == 4
+    moved = {("at", "t1", "a")}, {("at", "t1", "b")}
+    state = frozenset(atoms) - moved[0] | moved[1]
+    child = facts.changed(state, *moved)
+    assert relation(child, "?t", "?f").rows == relation(FactBase(state), "?t", "?f").rows
+    assert relation(child, "?t", "?l").rows is relation(child, "?t", "?f").rows

@@ -65,6 +65,13 @@ class Relation:
             self._indexes[positions] = found
         return found
 
+    def renamed(self, columns: tuple[str, ...]) -> Relation:
+        """The same rows over other variables, sharing this relation's rows and indexes
+        (an index built through either is built for both)."""
+        view = Relation(columns, self.rows)
+        view._indexes = self._indexes
+        return view
+
     def changed(self, removed: Sequence[Row], added: Sequence[Row]) -> Relation:
         """This relation less the rows ``removed`` (which it holds) and with the rows
         ``added`` (which it lacks), rows and built indexes kept in their sorted filing
@@ -213,7 +220,8 @@ class FactBase:
             else:  # a ground atom: held or not, no scan
                 relation = Relation((), [()] if pattern.ground in self.atoms else [])
             found = self._relations[pattern.key] = (pattern, relation)
-        return found[1]
+        relation = found[1]
+        return relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
 
 
 #: The atoms of one predicate a state lost and gained.
@@ -224,13 +232,15 @@ class Pattern:
     """A query atom compiled for matching: the objects it needs at which positions, its
     repeated variables, its variables' domains, and which positions become the
     relation's columns (each variable's first occurrence, in order). ``key`` is the same
-    for equal atoms with the same domains, so a state matches each pattern once."""
+    for atoms that differ at most in their variables' names (same predicate, objects,
+    repeats and domains), so a state matches each pattern once and keeps one relation
+    for, e.g., logistics' ``(at ?truck ?loc)`` and ``(at ?truck ?from)``: one copy to
+    update when a truck moves."""
 
     __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size", "ground")
 
     def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
         self.predicate = atom.predicate
-        self.key = (atom.predicate, atom.args, tuple(id(domains.get(a)) for a in atom.args))
         columns: list[str] = []
         self.taken: list[int] = []
         self.checks: list[tuple[int, str]] = []  # position, object
@@ -248,6 +258,8 @@ class Pattern:
                 if domain is not None:
                     self.typed.append((position, domain))
         self.columns = tuple(columns)
+        shape = tuple(columns.index(t) if t in columns else t for t in atom.args)
+        self.key = (atom.predicate, shape, tuple(id(domains.get(a)) for a in atom.args))
         self.size = len(atom.args) + 1
         #: The atom itself when it has no variables (its relation is a membership test).
         self.ground: GroundAtom | None = None if columns else (atom.predicate, *atom.args)
@@ -392,8 +404,11 @@ class JoinEngine:
             yield from _project([], _Filters(query, facts).apply([], [()]), query)
             return
         if plan.tree is not None:
+            narrowed = _narrowed(relations, plan.tree)
+            if narrowed is None:
+                return
             root = plan.tree[-1][1] if plan.tree else 0
-            order = [relations[root]] + [relations[child] for child, _ in reversed(plan.tree)]
+            order = [narrowed[root]] + [narrowed[child] for child, _ in reversed(plan.tree)]
         else:
             order = _greedy_order(relations)
         yield from _NestedLoop(order, query, facts).rows()
@@ -571,6 +586,36 @@ def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_r
             kept.sort()
             return kept
     return _semijoin(relation.columns, rows, other, other_rows)
+
+
+def _narrowed(relations: list[Relation], tree: list[tuple[int, int]]) -> list[Relation] | None:
+    """The relations of an acyclic query after the upward semi-join pass of
+    :meth:`JoinEngine.stream`, None when it leaves a relation empty (the query has no
+    answer). Two unreduced relations are first tested for a common key of their indexes
+    on the shared columns (a disjointness test in C over the smaller key set, no row
+    visited), so an action with no instance is refuted without a scan of its large
+    relations (e.g. the trucks' ``at`` atoms against the packages' places); a relation
+    is replaced by its reduced rows (in filing order) only when the other side has many
+    times fewer keys, the cost following those keys; otherwise the nested loop meets
+    its dead ends itself."""
+    rows = [r.rows for r in relations]
+    for child, parent in tree:
+        ours, theirs = relations[parent], relations[child]
+        if rows[parent] is ours.rows and rows[child] is theirs.rows:
+            shared = [c for c in ours.columns if c in theirs.columns]
+            if not shared:
+                continue
+            mine = ours.index(tuple(ours.columns.index(c) for c in shared))
+            keys = theirs.index(tuple(theirs.columns.index(c) for c in shared)).keys()
+            if mine.keys().isdisjoint(keys):
+                return None
+            if len(keys) * 8 < len(mine):
+                rows[parent] = sorted(row for key in keys if key in mine for row in mine[key])
+        else:
+            rows[parent] = _reduce(ours, rows[parent], theirs.columns, rows[child])
+            if not rows[parent]:
+                return None
+    return [r if rows[i] is r.rows else Relation(r.columns, rows[i]) for i, r in enumerate(relations)]
 
 
 def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:

@@ -162,6 +162,9 @@ class LiftedTask:
         self._normalizer = normalizer
         self.objects: tuple[str, ...] = task.objects_by_type.get("object", ())
         self.static: frozenset[str] = static_predicates(task)
+        #: The objects of each typed parameter's types, one set per type list, so that
+        #: queries over the same types share it (the join engine files relations by it).
+        self._domains: dict[tuple[str, ...], frozenset[str]] = {}
         self.actions = tuple(self._action(action) for action in task.domain.actions)
         self.goal = self._queries(task.problem.goal, ())
         self.rules = self._rules()
@@ -245,7 +248,10 @@ class LiftedTask:
         domains: dict[str, frozenset[str]] = {}
         for param in (*params, *clause.params):
             if param.types != ("object",):
-                domains[param.name] = frozenset(self.pddl.objects_of(param.types))
+                found = self._domains.get(param.types)
+                if found is None:
+                    found = self._domains[param.types] = frozenset(self.pddl.objects_of(param.types))
+                domains[param.name] = found
         merged = _Merged()
         for atom in clause.positive:
             if atom.predicate == EQUALS and not merged.union(*atom.args):
