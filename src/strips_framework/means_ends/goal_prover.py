@@ -11,7 +11,9 @@ from attrs import define, field
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, negated_goal_clauses
-from strips_framework.logic.formulas import Formula
+from strips_framework.logic.formulas import Atomic, Formula, conjuncts
+from strips_framework.logic.terms import EQUALITY, is_ground
+from strips_framework.logic.unify import unify
 from strips_framework.worldmodel.problem import Problem
 from strips_framework.worldmodel.proving import (
     ProofResult,
@@ -36,10 +38,40 @@ class GoalProver:
     attempts: int = 0
     _negations: dict[Formula, tuple[Clause, ...]] = field(factory=dict)
     _cache: dict[tuple[WorldModel, Formula, int], ProofResult] = field(factory=dict)
+    #: Predicates, as ``(name, arity)``, that M0 can conclude other than by a ground
+    #: fact: those of a positive literal of a non-unit or non-ground clause, or of a
+    #: derived fact. An atom of any other predicate holds in a model only as a fact.
+    derivable: frozenset[tuple[str, int]] = field(init=False)
 
     def __attrs_post_init__(self) -> None:
         self.initial = initial_model(self.problem, self.skolem)
         self.session = open_session(self.prover, self.initial, self.problem.unique_names)
+        self.derivable = frozenset(
+            (atom[0], len(atom) - 1)
+            for clause in self.initial.clauses
+            if not (clause.is_unit and is_ground(clause.literals[0][1]))
+            for positive, atom in clause.literals
+            if positive
+        ) | frozenset((fact.atom[0], len(fact.atom) - 1) for fact in self.problem.derived)
+
+    def cannot_hold(self, model: WorldModel, goal: Formula) -> bool:
+        """True when a conjunct of ``goal`` is an atom that only a fact could prove and
+        no fact of ``model`` matches: no proof exists, so none need be tried. An attempt
+        that fails costs what its effort allows (every subset of a conjunctive goal's
+        literals, resolved on each); on elevators of IPC 2008, the attempts that check
+        whether an application made a deeper goal true took 22 of 57 s."""
+        for part in conjuncts(goal):
+            if not isinstance(part, Atomic):
+                continue
+            atom = part.atom
+            if atom[0] == EQUALITY or (atom[0], len(atom) - 1) in self.derivable:
+                continue
+            if is_ground(atom):
+                if not model.holds(atom):
+                    return True
+            elif not any(unify(atom, fact, {}) is not None for fact in model.facts_matching(atom)):
+                return True
+        return False
 
     def root_model(self) -> WorldModel:
         return WorldModel(self.initial)
