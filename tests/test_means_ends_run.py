@@ -150,7 +150,7 @@ def test_a_goal_with_a_conjunct_no_fact_can_match_cannot_hold_unless_an_axiom_co
 
 def test_after_an_application_a_deeper_goal_that_cannot_hold_is_not_tried():
     run, root, top = _run(AddListRelevance())
-    model, last = _after(run, root, *PLAN[:3])
+    model, _ = _after(run, root, *PLAN[:3])
     operators = run.goal_prover.problem.operators
     unneeded = _instance(operators, "push", "BOX1", "c", "d")  # AT(BOX1, c) is no fact
     away = _instance(operators, "goto", "d", "c")
