@@ -120,3 +120,43 @@ def test_after_an_application_the_deepest_goal_that_holds_is_worked_on_next():
     # push(BOX3, d, b) is applied at once; going to c first would have undone ATR(d).
     assert solution is not None and solution.plan == (last, final)
     assert [node.goals for node in run.tree.nodes] == [goals[2:], (top,)]
+
+
+def test_a_goal_with_a_conjunct_no_fact_can_match_cannot_hold_unless_an_axiom_concludes_it():
+    """What :meth:`GoalProver.cannot_hold` rules out is never provable; an atom an axiom
+    concludes (here CONNECTS both ways, and a door INROOM its rooms) is left to the prover."""
+    from strips_framework import Planner
+    from strips_framework.logic.formulas import And, Atomic
+    from strips_framework.logic.terms import Param
+
+    light = Path(__file__).resolve().parents[1] / "examples" / "robot-world" / "light.strips"
+    problem = Planner.create().load(light)
+    prover = GoalProver(problem, ResolutionProver(), Limits().effort)
+    model = prover.root_model()
+
+    def goal(*atoms):
+        return And([Atomic(a) for a in atoms])
+
+    missing = goal(("AT", "BOX1", "a"), ("NEXTTO", "ROBOT", "BOX1"))
+    assert prover.cannot_hold(model, missing)
+    assert not prover.prove(model, missing).proved
+    assert prover.cannot_hold(model, goal(("NEXTTO", Param("k"), "BOX1")))
+    for derived in [goal(("CONNECTS", "DOOR1", "ROOM5", "ROOM1")),
+                    goal(("AT", "BOX1", "a"), ("INROOM", "DOOR1", "ROOM1"))]:
+        assert not prover.cannot_hold(model, derived)
+        assert prover.prove(model, derived).proved
+    assert not prover.cannot_hold(model, goal(("AT", Param("k"), "a")))
+
+
+def test_after_an_application_a_deeper_goal_that_cannot_hold_is_not_tried():
+    run, root, top = _run(AddListRelevance())
+    model, _ = _after(run, root, *PLAN[:3])
+    operators = run.goal_prover.problem.operators
+    unneeded = _instance(operators, "push", "BOX1", "c", "d")  # AT(BOX1, c) is no fact
+    away = _instance(operators, "goto", "d", "c")
+    goals = (Goal(away.precondition(), away), Goal(unneeded.precondition(), unneeded), top)
+    attempts = run.goal_prover.attempts
+    assert run._skip_achieved(model, goals) == goals
+    # G0 (an existential, which no fact settles) is tried; push(BOX1, c, d)'s is not.
+    assert run.goal_prover.attempts == attempts + 1
+    assert (model, unneeded.precondition(), 1) not in run.goal_prover._cache

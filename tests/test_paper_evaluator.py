@@ -4,10 +4,15 @@ from __future__ import annotations
 
 import pytest
 
+from strips_framework.logic.clauses import Clause
 from strips_framework.logic.formulas import And, Atomic, Not
+from strips_framework.logic.terms import Param
 from strips_framework.means_ends.evaluator import PaperEvaluator
+from strips_framework.means_ends.features import top_goal_atoms_missing
+from strips_framework.means_ends.node import Goal, Node
 from strips_framework.options import OptionError
 from strips_framework.testing.nodes import hand_built_node as make_node
+from strips_framework.worldmodel.world import InitialModel, WorldModel
 
 
 def test_each_factor_counts_with_its_weight() -> None:
@@ -18,6 +23,7 @@ def test_each_factor_counts_with_its_weight() -> None:
         cost_weight=1000,
         successor_weight=10_000,
         pending_weight=100_000,
+        top_goal_weight=1_000_000,
     )
     node = make_node(
         subgoals=["A B", "C"],
@@ -26,20 +32,34 @@ def test_each_factor_counts_with_its_weight() -> None:
         successors=2,
         pending=[1, 0],
     )
-    assert evaluator.evaluate(node) == 2 + 3 * 10 + 2 * 100 + 1000 + 2 * 10_000 + 100_000
+    # G0 (DONE) is not a fact of the node's empty model: one missing atom.
+    assert evaluator.evaluate(node) == 2 + 3 * 10 + 2 * 100 + 1000 + 2 * 10_000 + 100_000 + 1_000_000
 
 
 def test_predicate_table_overrides_the_default_and_equality_is_free() -> None:
     evaluator = PaperEvaluator(
-        goal_weight=0, difference_weight=0, predicate_weight=1, predicate_weights={"INROOM": 5}
+        goal_weight=0, difference_weight=0, predicate_weight=1, predicate_weights={"INROOM": 5},
+        top_goal_weight=0,
     )
     goal = And([Atomic(("INROOM", "ROBOT", "ROOM1")), Atomic(("NEXTTO", "ROBOT", "BOX1")),
                 Not(Atomic(("=", "ROOM1", "ROOM2")))])
     assert evaluator.evaluate(make_node(subgoals=[goal])) == 5 + 1
 
 
-def test_top_goal_is_not_counted() -> None:
-    assert PaperEvaluator().evaluate(make_node(difference=None)) == 0
+def test_top_goal_is_not_counted_among_the_goals() -> None:
+    assert PaperEvaluator(top_goal_weight=0).evaluate(make_node(difference=None)) == 0
+
+
+def test_top_goal_term_counts_the_ground_atoms_of_g0_the_model_lacks() -> None:
+    """Two of G0's three ground atoms are facts of the model: one missing; the conjunct
+    with a variable and the equality are not counted."""
+    facts = [Clause([(True, atom)]) for atom in [("AT", "P1", "F1"), ("AT", "P2", "F2")]]
+    model = WorldModel(InitialModel(facts))
+    goal = And([Atomic(("AT", "P1", "F1")), Atomic(("AT", "P2", "F2")), Atomic(("AT", "P3", "F3")),
+                Atomic(("AT", "P4", Param("f"))), Not(Atomic(("=", "F1", "F2")))])
+    node = Node(0, model, (Goal(goal),), None, difference=None)
+    assert PaperEvaluator(goal_weight=0, difference_weight=0, top_goal_weight=1).evaluate(node) == 1
+    assert top_goal_atoms_missing(Node(0, WorldModel(InitialModel([])), (Goal(goal),), None)) == 3
 
 
 def test_fewer_goals_and_smaller_differences_win() -> None:
@@ -64,7 +84,7 @@ def test_defaults_lean_depth_first() -> None:
 
 
 def test_next_pending_instance_is_the_one_measured() -> None:
-    evaluator = PaperEvaluator(difference_weight=0, pending_weight=1)
+    evaluator = PaperEvaluator(difference_weight=0, pending_weight=1, top_goal_weight=0)
     assert evaluator.evaluate(make_node(pending=[2, 0])) == 2
     assert evaluator.evaluate(make_node(pending=[])) == 0
 

@@ -107,3 +107,27 @@ def test_rank_cost_puts_the_instance_whose_precondition_holds_first():
     )
     assert [str(r.operator) for r in by_resolvent] == ["make(a)", "make(b)"]
     assert [str(r.operator) for r in by_cost] == ["make(b)", "make(a)"]
+
+
+#: Like GOTO, but its precondition names n (ADJ), so a proof of it can bind n.
+MOVE = OperatorSchema(
+    "move", [m, n], And([Atomic(("ATR", m)), Atomic(("ADJ", m, n))]), [("ATR", n)], [("ATR", m)]
+)
+
+
+def test_with_no_other_instance_a_parameter_bound_to_the_goals_own_is_left_to_the_proof():
+    """A difference whose literals all hold the goal operator's unbound parameters (what
+    an SLD proof leaves) would give no instance and end the search; move's n is in its
+    precondition, so move is kept with n unbound. GOTO's n is not: still dropped."""
+    goal_param = Param("p")
+    difference = Difference([Clause([(False, ("ATR", goal_param))])])
+    found = _relevant(difference, [MOVE, GOTO], EMPTY)
+    assert [str(r.operator) for r in found] == ["move(m, n)"]
+    assert found[0].operator.binding_map() == {}
+
+
+def test_instances_with_parameters_left_unbound_only_when_none_binds_fully():
+    difference = Difference([Clause([(False, ("ATR", Param("p")))]),
+                             Clause([(False, ("ATR", "b"))])])
+    found = _relevant(difference, [MOVE], EMPTY)
+    assert [str(r.operator) for r in found] == ["move(m, b)"]

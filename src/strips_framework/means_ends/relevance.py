@@ -117,6 +117,14 @@ class AddListIndex(Record):
         self.by_cost = by_cost
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
+        """The relevant instances, ranked. When no instance binds all its parameters
+        the unifier touches, the ones whose precondition parameters were left unbound
+        instead (see :func:`_resolve`): without them the node would have no successor."""
+        return self._ranked(difference, model, False) or self._ranked(difference, model, True)
+
+    def _ranked(
+        self, difference: Difference, model: WorldModel, loose: bool
+    ) -> list[RelevantInstance]:
         protected = _protected_facts(difference, model)
         ranked: dict[OperatorInstance, tuple[tuple[int, ...], RelevantInstance]] = {}
         order = 0
@@ -125,7 +133,7 @@ class AddListIndex(Record):
                 if positive:
                     continue
                 for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
-                    found = _resolve(schema, renamed, add_atom, clause, position)
+                    found = _resolve(schema, renamed, add_atom, clause, position, loose)
                     if found is None or _never_applicable(found.operator, self.rigid, model):
                         continue
                     harm = _deleted_count(found.operator, protected)
@@ -159,7 +167,15 @@ def _resolve(
     add_atom: Atom,
     clause: Clause,
     position: int,
+    loose: bool = False,
 ) -> RelevantInstance | None:
+    """The instance of ``schema`` whose add atom resolves the literal at ``position``.
+    A parameter the unifier binds to a parameter of the goal's own operator (or to a
+    variable) cannot take that binding: the instance is dropped, or with ``loose`` the
+    parameter is left unbound when the precondition has it, for its proof to bind. A
+    difference whose literals all hold such parameters (an SLD proof that bound none of
+    them: on sokoban, ``at(player, ?ppos)`` and ``clear(?to)`` of ``push-to-goal``) gives
+    no instance otherwise, and the search ends exhausted after a few nodes."""
     target = clause.literals[position][1]
     unifier = unify(add_atom, target, {})
     if unifier is None:
@@ -170,6 +186,8 @@ def _resolve(
         if value == renamed:
             continue
         if params_of(value) or variables_of(value):
+            if loose:
+                continue  # left unbound: dropped below unless the precondition has it
             return None  # bound to another operator's parameter, or to a variable
         binding[own] = value
     for own in schema.parameters:

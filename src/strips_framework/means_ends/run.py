@@ -165,10 +165,14 @@ class MeansEndsRun:
         plan's steps, or G0) are not looked at: a planned step is there for what comes
         after it, not for the goal above it. Only a changed model can make a deeper goal true
         (each was unproved when it was pushed down), so only nodes made by an application
-        are checked; the proofs are cached per (model, goal)."""
+        are checked; the proofs are cached per (model, goal), and a goal with a
+        conjunct no fact can match is not tried (:meth:`GoalProver.cannot_hold`)."""
         deepest = next(i for i, goal in enumerate(goals) if goal in self.planned)
         for depth in range(deepest, 0, -1):
-            if self.goal_prover.prove(model, goals[depth].formula).proved:
+            formula = goals[depth].formula
+            if self.goal_prover.cannot_hold(model, formula):
+                continue
+            if self.goal_prover.prove(model, formula).proved:
                 return goals[depth:]
         return goals
 
