@@ -84,12 +84,25 @@ def test_strips_plugins_in_a_fresh_process_lists_the_builtins_only():
 
 
 def test_a_pddl_task_with_the_core_alone_is_searched_lifted_and_says_why():
-    """The core has lifted heuristics but no ground one: the default PDDL run searches
-    without grounding instead of stopping at the missing 'ff'."""
+    """The core has lifted goal count but no informed state heuristic: the default PDDL
+    run searches without grounding instead of stopping at the missing 'ff'."""
     domain = EXAMPLES / "pddl" / "blocksworld" / "domain.pddl"
     run = _core_alone(["solve", str(domain), str(domain.parent / "p4.pddl"), "--json"])
     assert run.returncode == 0, run.stderr
-    assert "strategy lifted-gbfs: no state heuristic is registered" in run.stderr
+    assert "strategy lifted-gbfs: the ground search's default heuristic (ff) is not registered" in run.stderr
     payload = json.loads(run.stdout)
     assert payload["status"] == "solved"
     assert payload["family"] == "lifted"
+
+
+def test_the_ground_strategies_run_with_the_core_alone_on_its_blind_heuristic(tmp_path):
+    """breadth-first ignores its heuristic and A* takes blind as uniform-cost search: both
+    shortest plans, without strips-evaluators."""
+    domain = EXAMPLES / "pddl" / "blocksworld" / "domain.pddl"
+    for strategy in ("breadth-first", "astar"):
+        config = tmp_path / f"{strategy}.toml"
+        config.write_text(f'[strategy]\nname = "{strategy}"\n')
+        run = _core_alone(["solve", str(domain), str(domain.parent / "p4.pddl"), "--config", str(config), "--json"])
+        assert run.returncode == 0, run.stderr
+        payload = json.loads(run.stdout)
+        assert payload["status"] == "solved" and len(payload["plan"]) == 8, payload

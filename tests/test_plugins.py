@@ -118,22 +118,25 @@ class _OnlyHeuristic:
 
 def test_defaults_come_from_what_is_registered(monkeypatch):
     """The core alone: a preferred default that is missing ('resolution', 'ff') gives way
-    to the one implementation registered (the builtin 'joins' prover, the plugin's
-    'goal-count' heuristic); one the core has ('paper') stays; a table with nothing
-    registered keeps its first preference, whose lookup says what is missing."""
+    to the one implementation registered (the builtin 'joins' prover, the builtin 'blind'
+    heuristic); one the core has ('paper') stays; a table with several registered and
+    none preferred keeps its first preference, whose lookup says what is missing."""
     from strips_framework.plugin.config import Config, default_name
 
     monkeypatch.setenv("STRIPS_DISABLE_PLUGIN_AUTOLOAD", "1")
-    registry = Registry(get_plugin_manager([_OnlyHeuristic()]))
-    assert default_name(registry, ("prover",), ("resolution",)) == "joins"
-    assert default_name(registry, ("heuristic",), ("ff",)) == "goal-count"
-    config = Config.default().with_registered_defaults(registry, ("prover", "evaluator", "heuristic"))
+    bare = Registry(get_plugin_manager())
+    assert default_name(bare, ("prover",), ("resolution",)) == "joins"
+    assert default_name(bare, ("heuristic",), ("ff",)) == "blind"
+    config = Config.default().with_registered_defaults(bare, ("prover", "evaluator", "heuristic"))
     assert config.choices["prover"].name == "joins"
     assert config.choices["evaluator"].name == "paper"
-    assert config.choices["heuristic"].name == "goal-count"
-    bare = Config.default().with_registered_defaults(Registry(get_plugin_manager()), ("heuristic",))
-    assert bare.choices["heuristic"].name == "ff"
+    assert config.choices["heuristic"].name == "blind"
+    registry = Registry(get_plugin_manager([_OnlyHeuristic()]))  # blind and goal-count
+    assert default_name(registry, ("heuristic",), ("ff",)) == "ff"
+    assert default_name(registry, ("heuristic",), ("goal-count", "ff")) == "goal-count"
+    several = Config.default().with_registered_defaults(registry, ("heuristic",))
+    assert several.choices["heuristic"].name == "ff"
     with pytest.raises(PluginError, match=r"no \[heuristic\] chosen, and the default state heuristic 'ff' is not registered"):
-        bare.registration(Registry(get_plugin_manager()), "heuristic")
+        several.registration(registry, "heuristic")
     chosen = Config.from_dict({"prover": "resolution"}).with_registered_defaults(registry, ("prover",))
     assert chosen.choices["prover"].name == "resolution"  # what the file chose stays

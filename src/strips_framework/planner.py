@@ -106,8 +106,10 @@ class Planner(Record):
         if not self._replace(config=config)._can_search_ground_tasks_by_default():
             choices = {**config.choices, "strategy": Choice("strategy", PDDL_LIFTED_STRATEGY)}
             config = config._replace(choices=choices)
-        tables = [config.table_of(kind) for kind in self._replace(config=config).kinds_used()]
-        config = config.with_registered_defaults(self.registry, tables)
+        # A lifted search's [heuristic] default is chosen below among lifted heuristics,
+        # not among the state heuristics DEFAULTS["heuristic"] names.
+        kinds = [k for k in self._replace(config=config).kinds_used() if k != "lifted-heuristic"]
+        config = config.with_registered_defaults(self.registry, map(config.table_of, kinds))
         if config is not self.config:
             return self._replace(config=config).checked()
         if self.searches_lifted_tasks and "heuristic" not in self.config.chosen:
@@ -241,8 +243,8 @@ class Planner(Record):
         if not self._replace(config=self.config.for_pddl())._can_search_ground_tasks_by_default():
             name = PDDL_LIFTED_STRATEGY
             why = (
-                "no state heuristic is registered for the ground search (the core alone has "
-                "only lifted ones): searching without grounding"
+                f"the ground search's default heuristic ({', '.join(DEFAULTS['heuristic'])}) is "
+                "not registered (the core alone has only 'blind'): searching without grounding"
             )
         elif estimate <= CHEAP_GROUNDING:
             name = PDDL_DEFAULT_STRATEGY
@@ -260,8 +262,9 @@ class Planner(Record):
 
     def _can_search_ground_tasks_by_default(self) -> bool:
         """False when the strategy is a default ground search whose default heuristic is
-        not registered (the core alone, with plugin autoload off, has no ground heuristic
-        but lifted ones): then a default PDDL run searches lifted instead of failing."""
+        not registered (the core alone, with plugin autoload off, has only the blind state
+        heuristic, but lifted goal count): then a default PDDL run searches lifted, guided,
+        rather than ground and blind."""
         if "strategy" in self.config.chosen or "heuristic" in self.config.chosen:
             return True
         if not self.searches_ground_tasks:

@@ -77,6 +77,13 @@ def strips_register_lifted_strategies() -> list[type]:
 
 
 @hookimpl
+def strips_register_heuristics() -> list[type]:
+    from strips_framework.forward.blind import BlindHeuristic
+
+    return [BlindHeuristic]
+
+
+@hookimpl
 def strips_register_lifted_heuristics() -> list[type]:
     from strips_framework.lifted.goal_count import LiftedGoalCount
 

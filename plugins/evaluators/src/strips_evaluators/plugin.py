@@ -33,15 +33,15 @@ def strips_register_evaluators() -> list[type[NodeEvaluator]]:
 @hookimpl
 def strips_register_heuristics() -> list[type[StateHeuristic]]:
     from strips_evaluators.heuristics.additive import AdditiveHeuristic
-    from strips_evaluators.heuristics.blind import BlindHeuristic
     from strips_evaluators.heuristics.ff import FFHeuristic
     from strips_evaluators.heuristics.goal_count import GoalCountHeuristic
     from strips_evaluators.heuristics.hmax import MaxHeuristic
     from strips_evaluators.heuristics.lmcount import LandmarkCountHeuristic
     from strips_evaluators.heuristics.lmcut import LMCutHeuristic
 
+    # The blind heuristic is the core's (strips_framework.forward.blind), so that every
+    # ground-task strategy runs without this plugin.
     return [
-        BlindHeuristic,
         GoalCountHeuristic,
         MaxHeuristic,
         AdditiveHeuristic,

@@ -1,10 +1,13 @@
-"""The blind heuristic: no guidance, but a valid lower bound."""
+"""The blind heuristic: no guidance, but a valid lower bound.
+
+A builtin (the other state heuristics come from strips-evaluators), so that the core
+alone runs every ground-task strategy: breadth-first, which ignores its heuristic, and A*
+as uniform-cost search."""
 
 from __future__ import annotations
 
 import math
 from typing import ClassVar
-
 
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
