@@ -16,7 +16,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "src" / "strips_framework"
 #: Each top-level module or subpackage with its layer; higher numbers sit on lower ones.
 LAYER = {
     "errors": 0, "result": 0, "limits": 0, "user_files": 0, "progress": 0, "capabilities": 0,
-    "options": 0, "records": 0, "compiled": 0, "exit_codes": 0, "plan_steps": 0, "observer": 0,
+    "options": 0, "records": 0, "allocation": 0, "compiled": 0, "exit_codes": 0, "plan_steps": 0, "observer": 0,
     "logic": 1,
     "worldmodel": 2, "formats": 2,
     "means_ends": 3, "pddl": 3,

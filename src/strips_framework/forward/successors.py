@@ -19,6 +19,7 @@ from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
 from typing import Protocol
 
+from strips_framework.allocation import collection_paused
 from strips_framework.compiled import compiled_module
 from strips_framework.grounding.task import GroundOperator, GroundTask, facts_in
 
@@ -33,6 +34,7 @@ class Successors(Protocol):
     def applicable(self, state: int) -> list[int]: ...
 
 
+@collection_paused()
 def successor_generator(task: GroundTask, compiled: bool | None = None) -> Successors:
     """The compiled generator of ``task`` when it is built, else the reference (``compiled``
     as in :func:`~strips_framework.compiled.compiled_module`)."""

@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from operator import attrgetter, itemgetter
 
+from strips_framework.allocation import collection_paused
 from strips_framework.errors import InputError
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.grounding.normalize import Clause, Normalizer
@@ -67,6 +68,7 @@ class _Source(Record):
         self.effect = effect
 
 
+@collection_paused()
 def ground(task: PddlTask, prune_irrelevant: bool = True) -> GroundTask:
     """The ground task of ``task``; see the module docstring. With ``prune_irrelevant``
     the facts and operators that cannot matter to the goal are left out too (see

@@ -18,6 +18,7 @@ from types import ModuleType
 from typing import Protocol
 
 from strips_evaluators.heuristics.relaxation import RelaxedTask, start_exploration
+from strips_framework.allocation import collection_paused
 from strips_framework.compiled import compiled_module as shared_compiled_module
 from strips_framework.records import Record
 
@@ -67,6 +68,7 @@ def compiled_module(compiled: bool | None = None) -> ModuleType | None:
     return shared_compiled_module("strips_evaluators.heuristics._explore", compiled)
 
 
+@collection_paused()
 def explorer(relaxed: RelaxedTask, compiled: bool | None = None) -> Explorer:
     """The compiled explorer of ``relaxed`` (see :func:`compiled_module`), else the
     pure-Python one."""

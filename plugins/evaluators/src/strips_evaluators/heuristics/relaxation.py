@@ -21,6 +21,7 @@ import math
 
 from strips_evaluators.heuristics.causal_order import causal_order
 from strips_evaluators.heuristics.factoring import factor_shared_pairs
+from strips_framework.allocation import collection_paused
 from strips_framework.grounding.task import GroundTask, facts_in
 from strips_framework.records import Record
 
@@ -129,6 +130,7 @@ class RelaxedTask(Record):
         self.start_rank = start_rank
 
 
+@collection_paused()
 def relax(task: GroundTask, extra_facts: int = 0, factor_sharing: int = 0) -> RelaxedTask:
     """The relaxed task; ``extra_facts`` reserves fact numbers after the task's own and
     :attr:`RelaxedTask.true_fact` for artificial facts a heuristic adds. With
