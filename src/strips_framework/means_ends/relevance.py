@@ -127,6 +127,10 @@ class AddListIndex(Record):
     ) -> list[RelevantInstance]:
         protected = _protected_facts(difference, model)
         ranked: dict[OperatorInstance, tuple[tuple[int, ...], RelevantInstance]] = {}
+        # What an instance costs besides its resolvent (None: it can never be applied),
+        # by instance: the clauses of a difference share most literals, so one instance
+        # is found again and again (on elevators, a dozen times per difference).
+        judged: dict[OperatorInstance, tuple[int, int] | None] = {}
         order = 0
         for clause in difference.clauses:
             for position, (positive, atom) in enumerate(clause.literals):
@@ -134,18 +138,33 @@ class AddListIndex(Record):
                     continue
                 for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
                     found = _resolve(schema, renamed, add_atom, clause, position, loose)
-                    if found is None or _never_applicable(found.operator, self.rigid, model):
+                    if found is None:
                         continue
-                    harm = _deleted_count(found.operator, protected)
-                    size = len(found.resolvent.literals)
-                    if self.by_cost:
-                        size += _missing_preconditions(found.operator, model, self.concluded)
+                    instance = found.operator
+                    if instance not in judged:
+                        judged[instance] = self._judge(instance, model, protected)
+                    verdict = judged[instance]
+                    if verdict is None:
+                        continue
+                    missing, harm = verdict
+                    size = len(found.resolvent.literals) + missing
                     key = (size, harm, order)
                     order += 1
                     known = ranked.get(found.operator)
                     if known is None or key < known[0]:
                         ranked[found.operator] = (key, found)
         return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
+
+    def _judge(
+        self, instance: OperatorInstance, model: WorldModel, protected: dict[tuple[str, int], set[Atom]]
+    ) -> tuple[int, int] | None:
+        """``None`` when ``instance`` can never be applied in ``model``'s successors,
+        else what ranks it besides its resolvent: its missing precondition atoms (with
+        ``rank = "cost"``; 0 otherwise) and the facts of the proof it may delete."""
+        if _never_applicable(instance, self.rigid, model):
+            return None
+        missing = _missing_preconditions(instance, model, self.concluded) if self.by_cost else 0
+        return missing, _deleted_count(instance, protected)
 
 
 def _add_atoms_by_predicate(
