@@ -28,7 +28,7 @@ class Limits(Configurable):
         Option("time", float, 60.0, minimum=0, exclusive_minimum=True, maximum=MAX_TIME),
         Option("nodes", int, 10_000, minimum=1),
         Option("effort", int, 300, minimum=1),
-        Option("difference_effort", int, 50, minimum=1),
+        Option("difference_effort", int, 30, minimum=1),
         Option("expansions", int, None, minimum=1, optional=True),
         Option("memory", int, None, minimum=1, maximum=MAX_MEMORY, optional=True),
     )
