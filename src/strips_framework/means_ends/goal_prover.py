@@ -9,8 +9,8 @@ import time
 
 from strips_framework.logic.clauses import Clause
 from strips_framework.logic.cnf import SkolemNames, negated_goal_clauses
-from strips_framework.logic.horn import is_conjunctive_query
 from strips_framework.logic.formulas import Atomic, Formula, conjuncts
+from strips_framework.logic.horn import is_conjunctive_query
 from strips_framework.logic.terms import EQUALITY, is_ground
 from strips_framework.logic.unify import unify
 from strips_framework.worldmodel.fact_join import facts_join
@@ -28,8 +28,8 @@ class GoalProver:
     """One search's access to the prover. Mutable: it counts the attempts and the time
     spent proving, and caches clause forms and answers."""
 
-    __slots__ = ("problem", "prover", "effort", "difference_effort", "skolem", "initial", "session", "seconds",
-                 "attempts", "_negations", "_cache", "derivable")  # fmt: skip
+    __slots__ = ("problem", "prover", "effort", "difference_effort", "skolem", "initial",
+                 "session", "seconds", "attempts", "_negations", "_cache", "derivable")  # fmt: skip
 
     def __init__(
         self,
@@ -144,7 +144,8 @@ class GoalProver:
             return cached
         negated = self.negated(goal)
         started = time.perf_counter()
-        result = self.session.prove(model, negated, self.effort if effort is None else effort, max_answers)
+        bound = self.effort if effort is None else effort
+        result = self.session.prove(model, negated, bound, max_answers)
         self.seconds += time.perf_counter() - started
         self.attempts += 1
         self._cache[key] = result

@@ -163,7 +163,10 @@ class AddListIndex(Record):
         return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
 
     def _judge(
-        self, instance: OperatorInstance, model: WorldModel, protected: dict[tuple[str, int], set[Atom]]
+        self,
+        instance: OperatorInstance,
+        model: WorldModel,
+        protected: dict[tuple[str, int], set[Atom]],
     ) -> tuple[int, int] | None:
         """``None`` when ``instance`` can never be applied in ``model``'s successors,
         else what ranks it besides its resolvent: its missing precondition atoms (with

@@ -53,7 +53,7 @@ class _Join:
     raised wherever the process is, and one raised while an abandoned generator is
     being finalized would be lost."""
 
-    __slots__ = ("model", "equations", "left", "undecided")
+    __slots__ = ("equations", "left", "model", "undecided")
 
     def __init__(self, model: WorldModel, equations: list[Atom], budget: int) -> None:
         self.model = model
