@@ -8,7 +8,7 @@ IPC 2008, 300 given clauses and 20 to 130 ms, while a proof takes 1 to 3 given c
 When every atom of the query is of a predicate that only ground facts conclude, a
 refutation can only resolve each goal literal on a fact, so the query is provable exactly
 when some binding maps all of its atoms onto facts of the model at once: a join, decided
-in microseconds. The caller says which predicates only facts conclude
+without the prover. The caller says which predicates only facts conclude
 (:attr:`strips_framework.means_ends.goal_prover.GoalProver.derivable` is the rest).
 """
 
