@@ -119,7 +119,7 @@ class AddListIndex(Record):
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         """The relevant instances, ranked. When no instance binds all its parameters
         the unifier touches, the ones whose precondition parameters were left unbound
-        instead (see :func:`_resolve`): without them the node would have no successor."""
+        instead (see :func:`_bind`): without them the node would have no successor."""
         return self._ranked(difference, model, False) or self._ranked(difference, model, True)
 
     def _ranked(
@@ -127,25 +127,54 @@ class AddListIndex(Record):
     ) -> list[RelevantInstance]:
         protected = _protected_facts(difference, model)
         ranked: dict[OperatorInstance, tuple[tuple[int, ...], RelevantInstance]] = {}
+        # What an instance costs besides its resolvent (None: it can never be applied),
+        # by instance: the clauses of a difference share most literals, so one instance
+        # is found again and again (on elevators, a dozen times per difference).
+        judged: dict[OperatorInstance, tuple[int, int] | None] = {}
+        # The instance an add atom makes of a literal depends on the literal alone.
+        bound: dict[tuple[int, Atom], tuple[OperatorInstance, dict] | None] = {}
         order = 0
         for clause in difference.clauses:
             for position, (positive, atom) in enumerate(clause.literals):
                 if positive:
                     continue
-                for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
-                    found = _resolve(schema, renamed, add_atom, clause, position, loose)
-                    if found is None or _never_applicable(found.operator, self.rigid, model):
+                entries = self.by_predicate.get((atom[0], len(atom)), ())
+                for number, (schema, renamed, add_atom) in enumerate(entries):
+                    slot = (number, atom)
+                    if slot not in bound:
+                        bound[slot] = _bind(schema, renamed, add_atom, atom, loose)
+                    made = bound[slot]
+                    if made is None:
                         continue
-                    harm = _deleted_count(found.operator, protected)
-                    size = len(found.resolvent.literals)
-                    if self.by_cost:
-                        size += _missing_preconditions(found.operator, model, self.concluded)
+                    instance, unifier = made
+                    if instance not in judged:
+                        judged[instance] = self._judge(instance, model, protected)
+                    verdict = judged[instance]
+                    if verdict is None:
+                        continue
+                    missing, harm = verdict
+                    found = RelevantInstance(instance, _resolvent(clause, position, unifier))
+                    size = len(found.resolvent.literals) + missing
                     key = (size, harm, order)
                     order += 1
                     known = ranked.get(found.operator)
                     if known is None or key < known[0]:
                         ranked[found.operator] = (key, found)
         return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
+
+    def _judge(
+        self,
+        instance: OperatorInstance,
+        model: WorldModel,
+        protected: dict[tuple[str, int], set[Atom]],
+    ) -> tuple[int, int] | None:
+        """``None`` when ``instance`` can never be applied in ``model``'s successors,
+        else what ranks it besides its resolvent: its missing precondition atoms (with
+        ``rank = "cost"``; 0 otherwise) and the facts of the proof it may delete."""
+        if _never_applicable(instance, self.rigid, model):
+            return None
+        missing = _missing_preconditions(instance, model, self.concluded) if self.by_cost else 0
+        return missing, _deleted_count(instance, protected)
 
 
 def _add_atoms_by_predicate(
@@ -161,22 +190,21 @@ def _add_atoms_by_predicate(
     return index
 
 
-def _resolve(
+def _bind(
     schema: OperatorSchema,
     renaming: dict[Param, Param],
     add_atom: Atom,
-    clause: Clause,
-    position: int,
+    target: Atom,
     loose: bool = False,
-) -> RelevantInstance | None:
-    """The instance of ``schema`` whose add atom resolves the literal at ``position``.
-    A parameter the unifier binds to a parameter of the goal's own operator (or to a
-    variable) cannot take that binding: the instance is dropped, or with ``loose`` the
-    parameter is left unbound when the precondition has it, for its proof to bind. A
-    difference whose literals all hold such parameters (an SLD proof that bound none of
-    them: on sokoban, ``at(player, ?ppos)`` and ``clear(?to)`` of ``push-to-goal``) gives
-    no instance otherwise, and the search ends exhausted after a few nodes."""
-    target = clause.literals[position][1]
+) -> tuple[OperatorInstance, dict] | None:
+    """The instance of ``schema`` whose add atom resolves the literal of ``target``,
+    and the unifier. A parameter the unifier binds to a parameter of the goal's own
+    operator (or to a variable) cannot take that binding: the instance is dropped, or with
+    ``loose`` the parameter is left unbound when the precondition has it, for its proof to
+    bind. A difference whose literals all hold such parameters (an SLD proof that bound
+    none of them: on sokoban, ``at(player, ?ppos)`` and ``clear(?to)`` of
+    ``push-to-goal``) gives no instance otherwise, and the search ends exhausted after a
+    few nodes."""
     unifier = unify(add_atom, target, {})
     if unifier is None:
         return None
@@ -193,13 +221,17 @@ def _resolve(
     for own in schema.parameters:
         if own not in binding and own not in schema.precondition_params:
             return None
+    return OperatorInstance(schema, binding.items()), unifier
+
+
+def _resolvent(clause: Clause, position: int, unifier: dict) -> Clause:
+    """What is left of ``clause`` once the literal at ``position`` is resolved away."""
     rest = [
         (sign, substitute(atom, unifier))
         for i, (sign, atom) in enumerate(clause.literals)
         if i != position
     ]
-    resolvent = Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
-    return RelevantInstance(OperatorInstance(schema, binding.items()), resolvent)
+    return Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
 
 
 def _never_applicable(

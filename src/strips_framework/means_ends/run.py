@@ -131,7 +131,7 @@ class MeansEndsRun:
             self.seen.add(key)
             node = self.tree.new_node(model, goals, parent, plan, applied)
             first = goals[0]
-            result = self.goal_prover.prove(model, first.formula)
+            result = self.goal_prover.attempt(model, first.formula)
             if not result.proved:
                 self._set_difference(node, result)
                 return None
@@ -170,7 +170,7 @@ class MeansEndsRun:
         deepest = next(i for i, goal in enumerate(goals) if goal in self.planned)
         for depth in range(deepest, 0, -1):
             formula = goals[depth].formula
-            if self.goal_prover.cannot_hold(model, formula):
+            if self.goal_prover.decide(model, formula) is False:
                 continue
             if self.goal_prover.prove(model, formula).proved:
                 return goals[depth:]

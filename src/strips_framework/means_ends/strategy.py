@@ -68,7 +68,9 @@ class MeansEndsSearch(Configurable):
         from strips_framework.means_ends.run import MeansEndsRun
 
         agenda = goal_agenda(problem)[:-1] if self.goal_agenda else ()
-        run = MeansEndsRun(self.max_goals, problem, GoalProver(problem, prover, limits.effort),
+        goal_prover = GoalProver(problem, prover, limits.effort,
+                                 difference_effort=limits.difference_effort)
+        run = MeansEndsRun(self.max_goals, problem, goal_prover,
                            differences, relevance, evaluator, limits,
                            clock or Clock(limits.time),
                            planned=tuple(Goal(formula) for formula in agenda))

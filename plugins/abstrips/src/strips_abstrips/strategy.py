@@ -111,7 +111,8 @@ class AbstripsSearch(Configurable):
         from strips_framework.means_ends.tree import SearchTree
         from strips_framework.result import Status
 
-        goal_prover = GoalProver(problem, prover, limits.effort)
+        goal_prover = GoalProver(problem, prover, limits.effort,
+                                 difference_effort=limits.difference_effort)
         tree = SearchTree(limits, goal_prover, clock or Clock(limits.time))
         refiner = _Refiner(self, self.hierarchy(problem), problem, goal_prover,
                            differences, relevance, evaluator, limits, tree)
