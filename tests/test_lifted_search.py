@@ -14,9 +14,10 @@ import pytest
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.lifted.goal_count import LiftedGoalCount
+from strips_framework.lifted.novelty import Novelty
 from strips_framework.lifted.prover import JoinProver, ProverEngine
 from strips_framework.lifted.query import FactBase, JoinEngine, Pattern, Relation, _reduce, _semijoin
-from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch, _Novelty
+from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
 from strips_framework.limits import Limits
@@ -209,7 +210,7 @@ def test_novelty_from_a_parents_changes_equals_novelty_from_the_whole_state(seed
     only; random walks, each state's novelty against the whole-state test."""
     rng = random.Random(seed)
     atoms = [("p", f"o{i}") for i in range(30)]
-    hinted, whole = _Novelty(), _Novelty()
+    hinted, whole = Novelty(), Novelty()
     evaluated = [(frozenset(rng.sample(atoms, 8)), 2.0)]
     assert hinted.of(*evaluated[0]) == whole.of(*evaluated[0])
     novel = 0
@@ -241,8 +242,8 @@ def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(monkeypatc
         return found
 
     hinted = runs()
-    whole = _Novelty.of
-    monkeypatch.setattr(_Novelty, "of", lambda self, state, h, added=None: whole(self, state, h))
+    whole = Novelty.of
+    monkeypatch.setattr(Novelty, "of", lambda self, state, h, added=None: whole(self, state, h))
     assert runs() == hinted
     assert sum(expanded for _, _, expanded in hinted) > 50
 
