@@ -13,6 +13,7 @@ import pytest
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.lifted.alt_bfws import LiftedAlternatedBFWS
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.novelty import Novelty
 from strips_framework.lifted.prover import JoinProver, ProverEngine
@@ -265,7 +266,7 @@ def test_resolution_prover_as_the_engine_finds_the_same_instances(seed: int) -> 
         assert _lifted_moves(prover, state) == _lifted_moves(joins, state)
 
 
-@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
 @pytest.mark.parametrize("seed", range(25))
 def test_plans_are_valid(strategy: type, seed: int) -> None:
     pddl = random_pddl_task(seed)
@@ -322,7 +323,7 @@ class _Exhausting:
         return self.estimate(state), ()
 
 
-@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
 def test_running_out_of_memory_is_a_status_with_statistics(strategy: type) -> None:
     pddl = load_task(EXAMPLES / "blocksworld" / "domain.pddl", EXAMPLES / "blocksworld" / "p4.pddl")
     result = strategy().search_task(Successors(LiftedTask(pddl)), _Exhausting(5), Limits(time=30))
@@ -495,7 +496,7 @@ class _Constant:
         return 1.0, ()
 
 
-@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
 def test_each_reachable_state_is_stored_once_and_exhausting_them_proves_unsolvable(strategy: type) -> None:
     domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
     successors = Successors(LiftedTask(parse_task(domain, _blocks(4, "(and (on b0 b0))"))))

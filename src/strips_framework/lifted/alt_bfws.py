@@ -105,7 +105,7 @@ class LiftedAlternatedBFWS(LiftedStrategy):
             parent_counts = counts[number]
             goals_left, relevant_left = parent_counts
             for step in successors.applicable(facts):
-                budget.check(run.expanded)
+                budget.check(run.expanded - 1)  # the time, within this expansion
                 run.generated += 1
                 packed, g, removed, added = run.child(number, step)
                 if packed in space.ids:
@@ -172,23 +172,21 @@ class _Alternation:
             self.by_novelty_preferred.push(novelty_key, number)
 
     def pop(self) -> int:
-        """The next state number: this turn's kind (the preferred twin while there is
-        credit), or the other kind's when this kind's lists are empty (each pops at its
-        own pace, so one kind can run dry first)."""
+        """The next state number from this turn's kind: its preferred twin while there
+        is credit, else its regular list, else the twin (the regular list may have given
+        up every state first). Every state enters both kinds and pops alternate, so
+        when any list has an entry, the kind whose turn it is has one."""
         if self.novelty_turn:
-            kinds = ((self.by_novelty_preferred, self.by_novelty), (self.by_h_preferred, self.by_h))
+            twin, regular = self.by_novelty_preferred, self.by_novelty
         else:
-            kinds = ((self.by_h_preferred, self.by_h), (self.by_novelty_preferred, self.by_novelty))
+            twin, regular = self.by_h_preferred, self.by_h
         self.novelty_turn = not self.novelty_turn
-        for twin, regular in kinds:
-            if self.credit > 0 and len(twin):
-                self.credit -= 1
-                return twin.pop()
-            if len(regular):
-                return regular.pop()
-            if len(twin):
-                return twin.pop()
-        raise IndexError("pop from empty open lists")
+        if self.credit > 0 and len(twin):
+            self.credit -= 1
+            return twin.pop()
+        if len(regular):
+            return regular.pop()
+        return twin.pop()
 
     def reward_progress(self) -> None:
         self.credit += self.boost
