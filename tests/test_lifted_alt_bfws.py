@@ -300,7 +300,7 @@ _LOCKED = """(define (domain locked) (:requirements :strips)
 def test_every_reachable_state_once_then_unsolvable_and_dead_ends_are_not_expanded() -> None:
     pddl = _blocks(4, "(and (on b0 b0))")
     result = LiftedAlternatedBFWS().search_task(
-        Successors(LiftedTask(pddl)), _Constant(), Limits(time=30)
+        Successors(LiftedTask(pddl)), LiftedGoalCount().for_task(pddl), Limits(time=30)
     )
     assert result.status == Status.UNSOLVABLE
     assert result.statistics.states == 125 == result.statistics.expanded
@@ -331,14 +331,6 @@ def test_every_reachable_state_once_then_unsolvable_and_dead_ends_are_not_expand
     assert dead_ends and trace.run.dead_ends == len(dead_ends)
     assert dead_ends <= set(trace.pops)
     assert not dead_ends & set(space.parents)  # no state generated from a dead end
-
-
-class _Constant:
-    def estimate(self, state: frozenset) -> float:
-        return 1.0
-
-    def estimate_with_preferred(self, state: frozenset) -> tuple[float, tuple]:
-        return 1.0, ()
 
 
 def test_the_goal_is_tested_on_generation_and_the_plan_read_back() -> None:
