@@ -184,23 +184,30 @@ def test_each_childs_counts_and_novelty_are_those_of_its_whole_state() -> None:
     assert novel > 20 and stale > 20 and relevant_seen > 10, (novel, stale, relevant_seen)
 
 
-def test_a_child_is_preferred_when_it_gains_an_atom_useful_in_its_parents_plan() -> None:
-    preferred = plain = 0
-    for pddl in TASKS:
+@pytest.mark.parametrize("useful_atoms", [False, True])
+def test_a_child_is_preferred_when_a_preferred_instance_makes_it(useful_atoms: bool) -> None:
+    """By default, when one of its parent's preferred instances made it; with
+    ``useful_atoms``, also when it gains an atom useful in its parent's relaxed plan
+    (Powerlifted's test). Without ``preferred``, none is."""
+    preferred = plain = by_atoms_only = 0
+    blocks = _blocks(6, "(and (on b1 b0) (on b2 b1) (on b5 b3) (on b4 b5))")
+    for pddl in [*TASKS, blocks]:
         counting = _Counting(_ff(pddl))
-        trace = _Trace(pddl, counting)
+        trace = _Trace(pddl, counting, useful_atoms=useful_atoms)
         space = trace.run.space
         for number, _, _, flagged in trace.pushes[1:]:
             parent = space.state(space.parents[number])
             gained = space.state(number) - parent
             guidance = counting.rated[parent]
-            expected = bool(gained & guidance.useful) or space.steps[number] in guidance.preferred
-            assert flagged == expected
+            by_instance = space.steps[number] in guidance.preferred
+            by_atoms = bool(gained & guidance.useful)
+            assert flagged == (by_instance or (useful_atoms and by_atoms))
             preferred += flagged
             plain += not flagged
-        quiet = _Trace(pddl, _Counting(_ff(pddl)), preferred=False)
+            by_atoms_only += by_atoms and not by_instance
+        quiet = _Trace(pddl, _Counting(_ff(pddl)), preferred=False, useful_atoms=useful_atoms)
         assert not any(flagged for *_, flagged in quiet.pushes)
-    assert preferred > 20 and plain > 20, (preferred, plain)
+    assert preferred > 20 and plain > 20 and by_atoms_only > 5, (preferred, plain, by_atoms_only)
 
 
 class _PreferredOnly:

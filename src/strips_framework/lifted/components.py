@@ -67,9 +67,9 @@ class Guidance(Record):
     left out, as no successor holds those). A successor that gains one of them is
     progress by the plan's lights whichever action instance made it (Powerlifted's
     *useful atoms*); ``lifted-alt-bfws`` takes the useful atoms of the initial state's
-    plan as the atoms worth counting, and a child that gains a useful atom of its
-    parent's plan as a preferred one. ``useful`` is empty for a dead end and for a
-    heuristic that computes no relaxed plan."""
+    plan as the atoms worth counting, and (with ``useful_atoms = true``) a child that
+    gains a useful atom of its parent's plan as a preferred one. ``useful`` is empty for
+    a dead end and for a heuristic that computes no relaxed plan."""
 
     value: float
     preferred: tuple[ActionInstance, ...]
