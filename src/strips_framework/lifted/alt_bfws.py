@@ -118,10 +118,18 @@ class LiftedAlternatedBFWS(LiftedStrategy):
                 lists.reward_progress()
             parent_counts = counts[number]
             goals_left, relevant_left = parent_counts
+            # LiftedRun.child, without looking the parent up again for each child (a
+            # childsnack state has some 50,000 applicable instances).
+            packed_parent, g_parent = space.packed[number], space.g[number]
+            change, repack = successors.change, space.repack
             for step in successors.applicable(facts):
                 budget.check(run.expanded - 1)  # the time, within this expansion
                 run.generated += 1
-                packed, g, removed, added = run.child(number, step)
+                removed, added, cost = change(state, facts, step)
+                packed = (
+                    repack(packed_parent, removed, added) if removed or added else packed_parent
+                )
+                g = g_parent + cost
                 if packed in space.ids:
                     continue
                 child = space.add(packed, number, step, g)
@@ -137,8 +145,8 @@ class LiftedAlternatedBFWS(LiftedStrategy):
                 child_counts = (
                     child_goals,
                     relevant_left
-                    + sum(1 for atom in removed if atom in relevant)
-                    - sum(1 for atom in added if atom in relevant),
+                    + len(relevant.intersection(removed))
+                    - len(relevant.intersection(added)),
                 )
                 counts.append(child_counts)
                 if child_counts == parent_counts:

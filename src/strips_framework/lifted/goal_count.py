@@ -70,12 +70,11 @@ class GoalLiterals:
         held) and gaining ``added`` (atoms it lacked): :meth:`missing` of the successor
         minus the parent's, in time linear in the change."""
         positive, negative = self.positive, self.negative
-        return (
-            sum(1 for atom in removed if atom in positive)
-            - sum(1 for atom in added if atom in positive)
-            + sum(1 for atom in added if atom in negative)
-            - sum(1 for atom in removed if atom in negative)
-        )
+        # Intersections iterate the smaller side: the change, not the goal.
+        change = len(positive.intersection(removed)) - len(positive.intersection(added))
+        if negative:
+            change += len(negative.intersection(added)) - len(negative.intersection(removed))
+        return change
 
 
 class _GoalCountEstimator:
