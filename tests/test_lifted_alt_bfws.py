@@ -348,3 +348,37 @@ def test_the_goal_is_tested_on_generation_and_the_plan_read_back() -> None:
     assert validate_plan(pddl, [f"({name} {' '.join(args)})" for name, args in steps]).valid
     assert trace.goal not in trace.pops  # found when generated, never taken
     assert trace.run.expanded >= len(steps)
+
+
+_SWITCH = """(define (domain switch) (:requirements :strips :negative-preconditions)
+ (:predicates (on ?s) (wired ?s) (lit))
+ (:action flip :parameters (?s) :precondition (and (wired ?s) (not (on ?s))) :effect (and (on ?s) (lit)))
+ (:action unflip :parameters (?s) :precondition (on ?s) :effect (not (on ?s))))"""
+
+
+@pytest.mark.parametrize(
+    ("goal", "missing", "unreachable"),
+    [
+        ("(and (lit) (not (on s1)))", 1, False),
+        ("(and (lit) (wired s2))", 1, False),
+        ("(and (lit) (wired s1))", 1, True),  # a static atom that is false
+        ("(and (lit) (not (wired s2)))", 1, True),  # a static atom negated that holds
+    ],
+)
+def test_goal_literals_count_fluent_literals_and_settle_static_ones(
+    goal: str, missing: int, unreachable: bool
+) -> None:
+    problem = f"""(define (problem p) (:domain switch) (:objects s1 s2)
+     (:init (wired s2)) (:goal {goal}))"""
+    task = LiftedTask(parse_task(_SWITCH, problem))
+    literals = GoalLiterals(task)
+    assert literals.simple and literals.unreachable == unreachable
+    assert literals.missing(task.init) == missing
+    after = frozenset({("on", "s2"), ("lit",)})
+    assert literals.missing(after) == 0 == missing + literals.change(set(), set(after))
+    negated = int("(not (on s1))" in goal)
+    on = {("on", "s1")}
+    assert literals.change(set(), on) == negated == -literals.change(on, set())
+    assert literals.missing(after | on) == negated
+    estimate = LiftedGoalCount().for_task(parse_task(_SWITCH, problem)).estimate(task.init)
+    assert estimate == (math.inf if unreachable else missing)
