@@ -13,10 +13,12 @@ import pytest
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.lifted.alt_bfws import LiftedAlternatedBFWS
 from strips_framework.lifted.goal_count import LiftedGoalCount
+from strips_framework.lifted.novelty import Novelty
 from strips_framework.lifted.prover import JoinProver, ProverEngine
 from strips_framework.lifted.query import FactBase, JoinEngine, Pattern, Relation, _reduce, _semijoin
-from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch, _Novelty
+from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
 from strips_framework.limits import Limits
@@ -209,7 +211,7 @@ def test_novelty_from_a_parents_changes_equals_novelty_from_the_whole_state(seed
     only; random walks, each state's novelty against the whole-state test."""
     rng = random.Random(seed)
     atoms = [("p", f"o{i}") for i in range(30)]
-    hinted, whole = _Novelty(), _Novelty()
+    hinted, whole = Novelty(), Novelty()
     evaluated = [(frozenset(rng.sample(atoms, 8)), 2.0)]
     assert hinted.of(*evaluated[0]) == whole.of(*evaluated[0])
     novel = 0
@@ -241,8 +243,8 @@ def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(monkeypatc
         return found
 
     hinted = runs()
-    whole = _Novelty.of
-    monkeypatch.setattr(_Novelty, "of", lambda self, state, h, added=None: whole(self, state, h))
+    whole = Novelty.of
+    monkeypatch.setattr(Novelty, "of", lambda self, state, h, added=None: whole(self, state, h))
     assert runs() == hinted
     assert sum(expanded for _, _, expanded in hinted) > 50
 
@@ -264,7 +266,7 @@ def test_resolution_prover_as_the_engine_finds_the_same_instances(seed: int) -> 
         assert _lifted_moves(prover, state) == _lifted_moves(joins, state)
 
 
-@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
 @pytest.mark.parametrize("seed", range(25))
 def test_plans_are_valid(strategy: type, seed: int) -> None:
     pddl = random_pddl_task(seed)
@@ -321,7 +323,7 @@ class _Exhausting:
         return self.estimate(state), ()
 
 
-@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
 def test_running_out_of_memory_is_a_status_with_statistics(strategy: type) -> None:
     pddl = load_task(EXAMPLES / "blocksworld" / "domain.pddl", EXAMPLES / "blocksworld" / "p4.pddl")
     result = strategy().search_task(Successors(LiftedTask(pddl)), _Exhausting(5), Limits(time=30))
@@ -494,7 +496,7 @@ class _Constant:
         return 1.0, ()
 
 
-@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
+@pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
 def test_each_reachable_state_is_stored_once_and_exhausting_them_proves_unsolvable(strategy: type) -> None:
     domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
     successors = Successors(LiftedTask(parse_task(domain, _blocks(4, "(and (on b0 b0))"))))

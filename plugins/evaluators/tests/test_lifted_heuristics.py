@@ -124,6 +124,15 @@ def compare(task: PddlTask, limit: int) -> int:
             and not any((n, *[slots[i] for i in terms]) in model for n, terms in rule.negative)
         }
         assert expected <= set(preferred)
+        # Its guidance: the same value and preferred instances, and as useful atoms the
+        # facts the plan achieves (the goal's and its instances' body facts the state
+        # lacks), but for derived ones: no state holds those.
+        guidance = lifted_h["ff"].estimate_with_guidance(lifted)
+        assert (guidance.value, list(guidance.preferred)) == (ff, list(preferred))
+        subgoals = [*program.fluent_goal, *(fact for _, body, _ in plan for fact in body)]
+        useful = {f for f in subgoals if f not in lifted and f[0] not in program.derived}
+        assert guidance.useful == (useful if ff != math.inf else set())
+        assert all(fact[0] in changed for fact in guidance.useful)
     return equal_ff
 
 

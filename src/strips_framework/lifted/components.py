@@ -7,13 +7,19 @@ tuples ``(predicate, object, ...)``: they hash fast and need no interning to com
 
 A lifted heuristic is bound once per task (``for_task``) and then called for every state;
 it must not ground the whole task in ``for_task`` (that is what lifted search avoids), but
-may precompute anything linear in the size of the lifted task.
+may precompute anything linear in the size of the lifted task. Its estimator has
+``estimate`` and ``estimate_with_preferred`` (:class:`LiftedEstimator`); one whose
+heuristic builds a relaxed plan may also have ``estimate_with_guidance``
+(:class:`GuidingEstimator`: the plan's useful atoms besides its preferred instances),
+which a search reaches through :func:`with_guidance`, so any estimator works with it.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, ClassVar, Protocol
+
+from strips_framework.records import Record
 
 if TYPE_CHECKING:
     from strips_framework.pddl.task import PddlTask
@@ -49,6 +55,62 @@ class LiftedEstimator(Protocol):
         """The estimate and the preferred action instances (applicable in ``state``);
         heuristics without preferred operators return an empty sequence."""
         ...
+
+
+class Guidance(Record):
+    """What a relaxed plan for one state tells a search besides its estimate.
+
+    ``preferred``: action instances applicable in the state that the plan uses (as
+    :meth:`LiftedEstimator.estimate_with_preferred` gives them). ``useful``: the atoms
+    of the state's predicates that the relaxed plan achieves, i.e. the subgoals it found
+    a supporter for (none of them holds in the state; derived and auxiliary atoms are
+    left out, as no successor holds those). A successor that gains one of them is
+    progress by the plan's lights whichever action instance made it (Powerlifted's
+    *useful atoms*); ``lifted-alt-bfws`` takes the useful atoms of the initial state's
+    plan as the atoms worth counting, and (with ``useful_atoms = true``) a child that
+    gains a useful atom of its parent's plan as a preferred one. ``useful`` is empty for
+    a dead end and for a heuristic that computes no relaxed plan."""
+
+    value: float
+    preferred: tuple[ActionInstance, ...]
+    useful: frozenset[GroundAtom]
+
+    __slots__ = ("value", "preferred", "useful")
+
+    def __init__(
+        self,
+        value: float,
+        preferred: Sequence[ActionInstance] = (),
+        useful: frozenset[GroundAtom] = frozenset(),
+    ) -> None:
+        self.value = value
+        self.preferred = tuple(preferred)
+        self.useful = useful
+
+
+class GuidingEstimator(LiftedEstimator, Protocol):
+    """An estimator whose heuristic builds a relaxed plan and says what it achieves."""
+
+    def estimate_with_guidance(self, state: LiftedState) -> Guidance:
+        """The estimate of ``state`` with its preferred instances and useful atoms."""
+        ...
+
+
+def with_guidance(estimator: LiftedEstimator) -> Callable[[LiftedState], Guidance]:
+    """``estimator.estimate_with_guidance``, or, for an estimator without that optional
+    method (goal count, hadd, hmax, a third party's), a :class:`Guidance` with its
+    estimate and preferred instances and no useful atoms: a search asking for them then
+    counts no relevant atoms and prefers the children of preferred instances only."""
+    method = getattr(estimator, "estimate_with_guidance", None)
+    if method is not None:
+        return method
+    evaluate = estimator.estimate_with_preferred
+
+    def without_useful_atoms(state: LiftedState) -> Guidance:
+        value, preferred = evaluate(state)
+        return Guidance(value, preferred)
+
+    return without_useful_atoms
 
 
 class LiftedHeuristic(Protocol):

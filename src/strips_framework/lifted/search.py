@@ -18,10 +18,11 @@ themselves: the heuristic's, not the successor generator's), but an expansion no
 costs the state's whole branching: a state with thousands of applicable instances pays
 for the ones the search takes.
 ``lifted-bfws`` is eager greedy search
-with width-based novelty, the shape of Powerlifted's ``alt-bfws1``: every successor is
-evaluated when generated, and two open lists alternate, one ordered by the estimate and
-one by (novelty, estimate) where a state is novel (1) when it holds an atom no earlier
-state with the same estimate held, else 2 (Lipovetzky and Geffner's BFWS(f5), width 1).
+with width-based novelty: every successor is evaluated when generated, and two open
+lists alternate, one ordered by the estimate and one by (novelty, estimate) where a
+state is novel (1) when it holds an atom no earlier state with the same estimate held,
+else 2 (Lipovetzky and Geffner's BFWS(f5), width 1). Powerlifted's ``alt-bfws1``, which
+evaluates the heuristic only on expansion, is ``lifted-alt-bfws`` (:mod:`.alt_bfws`).
 """
 
 from __future__ import annotations
@@ -40,6 +41,7 @@ from strips_framework.lifted.components import (
     LiftedEstimator,
     LiftedState,
 )
+from strips_framework.lifted.novelty import Novelty
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
 from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
@@ -311,7 +313,7 @@ class LiftedBFWS(LiftedStrategy):
     def run(self, run: LiftedRun) -> int | None:
         successors, space, budget = run.successors, run.space, run.budget
         estimator = run.estimator
-        novelty = _Novelty()
+        novelty = Novelty()
         lists: list[BestFirstOpenList] = [BestFirstOpenList(), BestFirstOpenList()]
         if self.preferred:
             lists.append(BestFirstOpenList())
@@ -375,26 +377,3 @@ class LiftedBFWS(LiftedStrategy):
                 if step in preferred_steps:
                     lists[2].push(child_h, child_number)
         return None
-
-
-class _Novelty:
-    """Width-1 novelty partitioned by the estimate: 1 when the state holds an atom no
-    earlier state with the same estimate held, else 2."""
-
-    def __init__(self) -> None:
-        self._seen: dict[float, set] = {}
-
-    def of(self, state: LiftedState, h: float, added: set[GroundAtom] | None = None) -> int:
-        """``added``, when given: ``state`` is a successor of a state evaluated here
-        with the same estimate, which it differs from by gaining ``added`` (and losing
-        some). That state's atoms were all seen then, so only ``added`` can be new, and
-        the test costs what the action changed rather than the state's size."""
-        seen = self._seen.setdefault(h, set())
-        if added is not None:
-            new = [atom for atom in added if atom not in seen]
-        else:
-            new = state - seen if len(seen) else state
-        if new:
-            seen.update(new)
-            return 1
-        return 2

@@ -10,7 +10,8 @@ atoms sit under it once for the whole search.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from operator import itemgetter
 
 from strips_framework.lifted.components import ActionInstance, GroundAtom, LiftedState
 from strips_framework.lifted.query import FactBase, JoinEngine, QueryEngine
@@ -22,6 +23,30 @@ def instantiate(atom: Atom, binding: dict[str, str]) -> GroundAtom:
     return (atom.predicate, *[binding.get(arg, arg) for arg in atom.args])
 
 
+#: Makes a ground atom from an action instance's arguments (see :func:`maker`).
+Maker = Callable[[tuple[str, ...]], GroundAtom]
+
+
+def maker(atom: Atom, params: tuple[str, ...]) -> Maker:
+    """``atom`` (whose terms are ``params`` or objects) instantiated by an instance's
+    arguments, in parameter order: what :func:`instantiate` gives with the binding of
+    ``params`` to them, without making the binding (a search makes one per successor,
+    tens of thousands per state in childsnack)."""
+    positions = {param: i for i, param in enumerate(params)}
+    prefix: GroundAtom = (atom.predicate,)
+    if not atom.args:
+        return lambda args: prefix
+    if all(arg in positions for arg in atom.args):
+        indexes = [positions[arg] for arg in atom.args]
+        if len(indexes) == 1:
+            index = indexes[0]
+            return lambda args: (*prefix, args[index])
+        getter = itemgetter(*indexes)
+        return lambda args: prefix + getter(args)
+    terms = [(positions.get(arg, -1), arg) for arg in atom.args]
+    return lambda args: (*prefix, *[args[i] if i >= 0 else arg for i, arg in terms])
+
+
 class Successors:
     """The lifted task's states as the search sees them, through one query engine."""
 
@@ -30,6 +55,20 @@ class Successors:
         self.engine = engine if engine is not None else JoinEngine(task.objects)
         self.static = FactBase(task.static_atoms)
         self.schemas = {schema.name: schema for schema in task.actions}
+        #: Per action, the makers of its unconditional deletes and adds.
+        self._effects: dict[str, tuple[tuple[Maker, ...], tuple[Maker, ...]]] = {
+            schema.name: (
+                tuple(maker(atom, schema.params) for atom in schema.delete),
+                tuple(maker(atom, schema.params) for atom in schema.add),
+            )
+            for schema in task.actions
+        }
+        #: The cost of every instance of an action whose cost is not a function term.
+        self._costs = {
+            schema.name: task.cost(schema, {})
+            for schema in task.actions
+            if not task.uses_costs or isinstance(schema.cost, int)
+        }
         strata: dict[int, list[Rule]] = {}
         for rule in task.rules:
             strata.setdefault(rule.stratum, []).append(rule)
@@ -119,19 +158,25 @@ class Successors:
     ) -> tuple[set[GroundAtom], set[GroundAtom], int]:
         """What ``instance`` changes in ``state``: the atoms it makes false and those it
         makes true (each really changing), and its cost (see :meth:`apply`)."""
-        schema = self.schemas[instance[0]]
-        if schema.effects and facts is None:
-            facts = self.facts(state)
-        binding = dict(zip(schema.params, instance[1]))
-        delete = {instantiate(atom, binding) for atom in schema.delete}
-        add = {instantiate(atom, binding) for atom in schema.add}
-        for effect in schema.effects:
-            for extra in self._effect_bindings(effect.params, effect.condition, binding, facts):
-                delete.update(instantiate(atom, extra) for atom in effect.delete)
-                add.update(instantiate(atom, extra) for atom in effect.add)
-        removed = {atom for atom in delete if atom in state and atom not in add}
-        added = {atom for atom in add if atom not in state}
-        return removed, added, self.task.cost(schema, binding)
+        name, args = instance
+        schema = self.schemas[name]
+        deletes, adds = self._effects[name]
+        delete = {make(args) for make in deletes}
+        add = {make(args) for make in adds}
+        cost = self._costs.get(name)
+        if schema.effects or cost is None:
+            binding = dict(zip(schema.params, args))
+            if cost is None:
+                cost = self.task.cost(schema, binding)
+            if schema.effects and facts is None:
+                facts = self.facts(state)
+            for effect in schema.effects:
+                for extra in self._effect_bindings(effect.params, effect.condition, binding, facts):  # type: ignore[arg-type]
+                    delete.update(instantiate(atom, extra) for atom in effect.delete)
+                    add.update(instantiate(atom, extra) for atom in effect.add)
+        removed = delete.intersection(state).difference(add)
+        added = add.difference(state)
+        return removed, added, cost
 
     def _effect_bindings(
         self, params: tuple[str, ...], condition: tuple, binding: dict[str, str], facts: FactBase

@@ -71,9 +71,10 @@ def strips_register_ground_strategies() -> list[type]:
 
 @hookimpl
 def strips_register_lifted_strategies() -> list[type]:
+    from strips_framework.lifted.alt_bfws import LiftedAlternatedBFWS
     from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
 
-    return [LiftedLazyGreedySearch, LiftedBFWS]
+    return [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS]
 
 
 @hookimpl

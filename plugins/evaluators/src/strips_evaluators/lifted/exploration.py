@@ -237,10 +237,13 @@ def relaxed_plan(
     cost: dict[GroundAtom, float],
     supporter: dict[GroundAtom, Supporter],
     goal: Collection[GroundAtom] | None = None,
+    achieved: set[GroundAtom] | None = None,
 ) -> tuple[float, dict[tuple, Supporter]]:
     """hFF: the cost of the relaxed plan the best supporters give, walking back from the
     goal (by default the task's), and its rule instances by ``(rule number, slots)``; a
-    ground operator used for several of its effects counts once (as in the ground hFF)."""
+    ground operator used for several of its effects counts once (as in the ground hFF).
+    ``achieved``, when given, receives the facts the plan achieves: each subgoal it
+    found a supporter for (derived and auxiliary facts among them)."""
     if goal is None:
         goal = program.fluent_goal
     if program.static_goal_missing or any(fact not in cost for fact in goal):
@@ -249,9 +252,12 @@ def relaxed_plan(
     operators: dict[tuple, int] = {}
     subgoals = list(goal)
     while subgoals:
-        support = supporter.get(subgoals.pop())
+        subgoal = subgoals.pop()
+        support = supporter.get(subgoal)
         if support is None:
             continue
+        if achieved is not None:
+            achieved.add(subgoal)
         if support[0].parts:
             support = expand(support, supporter)
         rule, body, slots = support

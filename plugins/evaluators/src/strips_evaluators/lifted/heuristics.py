@@ -13,12 +13,13 @@ from typing import ClassVar
 from strips_evaluators.lifted.closure import DerivedClosure
 from strips_evaluators.lifted.exploration import (
     Exploration,
+    Supporter,
     action_instance,
     relaxed_plan,
 )
 from strips_evaluators.lifted.program import AXIOM, Program
 from strips_framework.capabilities import PREFERRED_OPERATORS
-from strips_framework.lifted.components import ActionInstance, LiftedState
+from strips_framework.lifted.components import ActionInstance, GroundAtom, Guidance, LiftedState
 from strips_framework.options import Configurable
 from strips_framework.pddl.task import PddlTask
 
@@ -94,7 +95,8 @@ class LiftedMax(Configurable):
 
 class FFEstimator:
     """hFF from hadd best supporters; preferred operators are the relaxed plan's action
-    instances applicable in the state."""
+    instances applicable in the state, useful atoms the facts it achieves
+    (:class:`~strips_framework.lifted.components.Guidance`)."""
 
     def __init__(self, program: Program) -> None:
         self.program = program
@@ -108,8 +110,23 @@ class FFEstimator:
     def estimate_with_preferred(self, state: LiftedState) -> tuple[float, Sequence[ActionInstance]]:
         cost, supporter = self.exploration.costs(state, additive=True)
         value, plan = relaxed_plan(self.program, cost, supporter)
+        return value, self._preferred(state, plan)
+
+    def estimate_with_guidance(self, state: LiftedState) -> Guidance:
+        """The estimate, the preferred instances and the useful atoms: the facts the
+        relaxed plan achieves, but for derived ones (axioms' heads, the normalizer's
+        auxiliary atoms, the goal's), which no state holds."""
+        cost, supporter = self.exploration.costs(state, additive=True)
+        achieved: set[GroundAtom] = set()
+        value, plan = relaxed_plan(self.program, cost, supporter, achieved=achieved)
+        derived = self.program.derived
+        useful = frozenset(fact for fact in achieved if fact[0] not in derived)
+        return Guidance(value, self._preferred(state, plan), useful)
+
+    def _preferred(self, state: LiftedState, plan: dict[tuple, Supporter]) -> list[ActionInstance]:
+        """The relaxed plan's action instances applicable in ``state``."""
         if not plan:
-            return value, ()
+            return []
         model = self.closure.model(state)
         preferred = set()
         for rule, body, slots in plan.values():
@@ -118,7 +135,7 @@ class FFEstimator:
             if any((name, *[slots[s] for s in terms]) in model for name, terms in rule.negative):
                 continue
             preferred.add(action_instance(self.program, rule, slots))
-        return value, sorted(preferred)
+        return sorted(preferred)
 
 
 class LiftedFF(Configurable):
