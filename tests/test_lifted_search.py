@@ -664,3 +664,104 @@ def test_patterns_differing_only_in_variable_names_share_one_relation() -> None:
     child = facts.changed(state, *moved)
     assert relation(child, "?t", "?f").rows == relation(FactBase(state), "?t", "?f").rows
     assert relation(child, "?t", "?l").rows is relation(child, "?t", "?f").rows
+
+
+def test_relations_a_parent_lacked_are_made_from_its_own_and_equal_a_rebuild() -> None:
+    """A lazy search makes a state's first children before the state asks for all its
+    relations: a child's missing relation (and a derived relation's missing index) is
+    then made in the parent, while it lives, and updated by the child's changes, so the
+    siblings share the parent's matching. Each such relation and index is the one made
+    from scratch, and a chain of fact bases matches each pattern once."""
+    made = chains = 0
+    for seed in range(20):
+        task = LiftedTask(random_pddl_task(seed))
+        successors = Successors(task)
+        queries = [q for schema in task.actions for q in schema.precondition] + list(task.goal)
+        for state in _reachable(successors, 8):
+            # The fluent atoms only (derived ones would make changed() a rebuild's
+            # equal only without axioms), nothing asked yet.
+            parent = FactBase(state, successors.static, task.static)
+            generations = [(state, parent)]
+            for _ in range(3):  # children, grandchildren, ..., none asking anything yet
+                at, facts = generations[-1]
+                steps = successors.applicable(successors.facts(at))
+                if not steps:
+                    break
+                removed, added, _ = successors.change(at, facts, steps[len(generations) % len(steps)])
+                child = (at - removed) | added
+                generations.append((child, facts.changed(child, removed, added)))
+            chains += len(generations) > 2
+            for at, facts in reversed(generations):  # the youngest asks first
+                scratch = FactBase(at, successors.static, task.static)
+                for query in queries:
+                    got = successors.engine.answers(query, facts)
+                    assert got == successors.engine.answers(query, scratch), (seed, query)
+                for key, (rows, indexes) in _filed(facts)[1].items():
+                    theirs = scratch.relation(facts._relations[key][0])
+                    assert rows == theirs.rows, (seed, key)
+                    for positions, index in indexes.items():
+                        assert index == dict(theirs.index(positions)), (seed, key, positions)
+                        made += 1
+    assert chains > 20 and made > 100, (chains, made)
+
+
+def test_a_chain_of_fact_bases_matches_and_indexes_a_relation_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Sixty blocks in towers: the initial state's children and grandchildren are made
+    before anything but the goal is asked of it; when they then list their successors,
+    the ``on`` relation is matched once (in the initial state's fact base) and its index
+    built once, the others made from those at the cost of their changes."""
+    successors = Successors(LiftedTask(_towers(60)))
+    task = successors.task
+    matched: list[str] = []
+    built: list[tuple[str, ...]] = []
+    match, index = Pattern.match, Relation.index
+
+    def counted_match(self: Pattern, atoms: object) -> Relation:
+        matched.append(self.predicate)
+        return match(self, atoms)
+
+    def counted_index(self: Relation, positions: tuple[int, ...]) -> dict:
+        if positions not in self._indexes and self._base is None and len(self.rows) > 20:
+            built.append(self.columns)  # (a narrowed relation is made per join, and small)
+        return index(self, positions)
+
+    root = successors.facts(task.init)
+    successors.is_goal(root)
+    steps = successors.applicable(successors.facts(task.init))
+    assert len(steps) == 6  # one unstack per tower
+    family = []
+    for step in steps:
+        removed, added, _ = successors.change(task.init, root, step)
+        state = (task.init - removed) | added
+        facts = root.changed(state, removed, added)
+        family.append((state, facts))
+        for grandstep in successors.applicable(successors.facts(state))[:2]:
+            out, into, _ = successors.change(state, facts, grandstep)
+            grandchild = (state - out) | into
+            family.append((grandchild, facts.changed(grandchild, out, into)))
+    monkeypatch.setattr(Pattern, "match", counted_match)
+    monkeypatch.setattr(Relation, "index", counted_index)
+    for state, facts in reversed(family):
+        assert successors.applicable(facts) == successors.applicable(FactBase(state, successors.static, task.static))
+    matched.clear()
+    built.clear()
+    for state, facts in family:  # (the scratch fact bases above are let go)
+        assert successors.applicable(facts)
+    assert not matched and not built
+    monkeypatch.undo()
+    fresh = successors.facts(task.init)
+    kids, grandkids = [], []
+    for step in steps:  # each picks up the top of a tower and puts it down
+        removed, added, _ = successors.change(task.init, fresh, step)
+        kid = (task.init - removed) | added
+        kids.append(fresh.changed(kid, removed, added))
+        down = successors.applicable(successors.facts(kid))[0]
+        assert down[0] == "put-down"
+        out, into, _ = successors.change(kid, kids[-1], down)
+        grandkids.append(kids[-1].changed((kid - out) | into, out, into))
+    monkeypatch.setattr(Pattern, "match", counted_match)
+    monkeypatch.setattr(Relation, "index", counted_index)
+    for grandkid in grandkids:
+        successors.applicable(grandkid)
+    assert matched.count("on") == 1, matched
+    assert built == [("?x", "?y")], built

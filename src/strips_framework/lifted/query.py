@@ -26,6 +26,7 @@ a relation is built once per relation (so once per task for a static one).
 
 from __future__ import annotations
 
+import weakref
 from bisect import bisect_left, insort
 from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
 from operator import itemgetter
@@ -42,26 +43,37 @@ class Relation:
     """Rows over ``columns`` (variables), with hash indexes on column subsets made on
     first use."""
 
-    __slots__ = ("columns", "rows", "_indexes")
+    __slots__ = ("columns", "rows", "_indexes", "_base", "_change", "__weakref__")
 
     def __init__(self, columns: tuple[str, ...], rows: list[Row]) -> None:
         self.columns = columns
         self.rows = rows
         self._indexes: dict[tuple[int, ...], dict[object, list[Row]]] = {}
+        #: The relation this one was made from by :meth:`changed` (while anything
+        #: else keeps it) and the rows it lost and gained since.
+        self._base: weakref.ref[Relation] | None = None
+        self._change: tuple[Sequence[Row], Sequence[Row]] = ((), ())
 
     def index(self, positions: tuple[int, ...]) -> dict[object, list[Row]]:
-        """The rows by their values at ``positions`` (a single value for one position)."""
+        """The rows by their values at ``positions`` (a single value for one position):
+        the index of the relation this one was made from, updated at the changed rows,
+        when that one is still alive (made there first, so that the relations made
+        from one share its building), else built from the rows."""
         found = self._indexes.get(positions)
         if found is None:
-            found = {}
-            key = _getter(positions)
-            for row in self.rows:
-                k = key(row)
-                bucket = found.get(k)
-                if bucket is None:
-                    found[k] = [row]
-                else:
-                    bucket.append(row)
+            base = self._base() if self._base is not None else None
+            if base is not None:
+                found = _index_changed(base.index(positions), positions, *self._change)
+            else:
+                found = {}
+                key = _getter(positions)
+                for row in self.rows:
+                    k = key(row)
+                    bucket = found.get(k)
+                    if bucket is None:
+                        found[k] = [row]
+                    else:
+                        bucket.append(row)
             self._indexes[positions] = found
         return found
 
@@ -70,6 +82,8 @@ class Relation:
         (an index built through either is built for both)."""
         view = Relation(columns, self.rows)
         view._indexes = self._indexes
+        view._base = self._base
+        view._change = self._change
         return view
 
     def changed(self, removed: Sequence[Row], added: Sequence[Row]) -> Relation:
@@ -83,21 +97,31 @@ class Relation:
         for row in added:
             insort(rows, row)
         child = Relation(self.columns, rows)
+        child._base = weakref.ref(self)
+        child._change = (removed, added)
         for positions, index in self._indexes.items():
-            copy = dict(index)
-            key = _getter(positions)
-            for row in removed:
-                k = key(row)
-                bucket = copy[k] = list(copy[k])
-                del bucket[bisect_left(bucket, row)]
-                if not bucket:
-                    del copy[k]
-            for row in added:
-                k = key(row)
-                bucket = copy[k] = list(copy.get(k, ()))
-                insort(bucket, row)
-            child._indexes[positions] = copy
+            child._indexes[positions] = _index_changed(index, positions, removed, added)
         return child
+
+
+def _index_changed(
+    index: dict[object, list[Row]], positions: tuple[int, ...], removed: Sequence[Row], added: Sequence[Row]
+) -> dict[object, list[Row]]:
+    """A copy of ``index`` (on ``positions``) less the rows ``removed`` and with the rows
+    ``added``, its buckets kept in filing order; the untouched buckets are shared."""
+    copy = dict(index)
+    key = _getter(positions)
+    for row in removed:
+        k = key(row)
+        bucket = copy[k] = list(copy[k])
+        del bucket[bisect_left(bucket, row)]
+        if not bucket:
+            del copy[k]
+    for row in added:
+        k = key(row)
+        bucket = copy[k] = list(copy.get(k, ()))
+        insort(bucket, row)
+    return copy
 
 
 def _getter(positions: Sequence[int]):  # noqa: ANN202 - itemgetter or a lambda
@@ -113,7 +137,10 @@ class FactBase:
     use. A state's fact base sits on the task's static one, which answers for the static
     predicates (and keeps its relations for the whole search)."""
 
-    __slots__ = ("atoms", "_by_predicate", "_relations", "_pending", "static", "_static_predicates")
+    __slots__ = (
+        "atoms", "_by_predicate", "_relations", "_pending", "static", "_static_predicates",
+        "_parent", "_changes", "__weakref__",
+    )  # fmt: skip
 
     def __init__(
         self,
@@ -140,6 +167,10 @@ class FactBase:
         self._pending: dict[object, tuple[Pattern, Relation, _Change]] = {}
         self.static = static
         self._static_predicates = static_predicates
+        #: The fact base this one was made from by :meth:`changed` (while anything
+        #: else keeps it), and the atoms of each predicate it lost and gained since.
+        self._parent: weakref.ref[FactBase] | None = None
+        self._changes: dict[tuple[str, int], _Change] = {}
 
     def holds(self, atom: GroundAtom) -> bool:
         if self.static is not None and atom[0] in self._static_predicates:
@@ -159,6 +190,7 @@ class FactBase:
                 touched.add(atom[0])
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
             self._pending = {k: p for k, p in self._pending.items() if k[0] not in touched}
+            self._parent = None  # (its relations lack these atoms)
         return new
 
     def changed(
@@ -177,6 +209,7 @@ class FactBase:
         child.atoms = state
         child.static = self.static
         child._static_predicates = self._static_predicates
+        child._parent = weakref.ref(self)
         by_predicate = dict(self._by_predicate)
         touched: dict[tuple[str, int], _Change] = {}
         for atom in removed:
@@ -191,6 +224,7 @@ class FactBase:
                 insort(atoms, atom)
             by_predicate[key] = atoms
         child._by_predicate = by_predicate
+        child._changes = touched
         relations = {}
         pending = {}
         for key, (pattern, relation) in self._relations.items():
@@ -208,20 +242,54 @@ class FactBase:
         if self.static is not None and pattern.predicate in self._static_predicates:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
-        if found is None:
-            pending = self._pending.pop(pattern.key, None)
-            if pending is not None:
-                _, parents, (out, into) = pending
-                removed = [row for row in map(pattern.row, out) if row is not None]
-                added = [row for row in map(pattern.row, into) if row is not None]
-                relation = parents.changed(removed, added) if removed or added else parents
-            elif pattern.columns:
-                relation = pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ()))
-            else:  # a ground atom: held or not, no scan
-                relation = Relation((), [()] if pattern.ground in self.atoms else [])
-            found = self._relations[pattern.key] = (pattern, relation)
-        relation = found[1]
+        relation = self._made(pattern) if found is None else found[1]
         return relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
+
+    def _made(self, pattern: Pattern) -> Relation:
+        """The relation of ``pattern``'s key (of a fluent predicate), which this fact
+        base lacks, made and kept. It is the parent's updated by this one's changes
+        when a parent is still alive: that parent makes its own the same way first, so
+        a relation is matched against a whole state once per chain of fact bases, not
+        once per state (a lazy search makes a state's first children before it asks
+        for all its relations, and their siblings then share what it makes)."""
+        if not pattern.columns:  # a ground atom: held or not, no scan
+            relation = Relation((), [()] if pattern.ground in self.atoms else [])
+            self._relations[pattern.key] = (pattern, relation)
+            return relation
+        chain: list[FactBase] = []  # the fact bases lacking it, nearest first
+        facts: FactBase | None = self
+        base: Relation | None = None
+        while facts is not None:
+            found = facts._relations.get(pattern.key)
+            if found is not None:
+                base = found[1]
+                break
+            pending = facts._pending.pop(pattern.key, None)
+            if pending is not None:
+                base = _updated(pattern, pending[1], pending[2])
+                facts._relations[pattern.key] = (pattern, base)
+                break
+            chain.append(facts)
+            facts = facts._parent() if facts._parent is not None else None
+        if base is None:
+            first = chain.pop()
+            base = pattern.match(first._by_predicate.get((pattern.predicate, pattern.size), ()))
+            first._relations[pattern.key] = (pattern, base)
+        for facts in reversed(chain):
+            change = facts._changes.get((pattern.predicate, pattern.size))
+            if change is not None:
+                base = _updated(pattern, base, change)
+            facts._relations[pattern.key] = (pattern, base)
+        return base
+
+
+def _updated(pattern: Pattern, relation: Relation, change: _Change) -> Relation:
+    """``relation`` (of ``pattern``) after its predicate lost and gained the atoms of
+    ``change``."""
+    out, into = change
+    removed = [row for row in map(pattern.row, out) if row is not None]
+    added = [row for row in map(pattern.row, into) if row is not None]
+    return relation.changed(removed, added) if removed or added else relation
 
 
 #: The atoms of one predicate a state lost and gained.
