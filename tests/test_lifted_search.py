@@ -765,3 +765,14 @@ def test_a_chain_of_fact_bases_matches_and_indexes_a_relation_once(monkeypatch: 
         successors.applicable(grandkid)
     assert matched.count("on") == 1, matched
     assert built == [("?x", "?y")], built
+
+
+def test_atoms_added_to_a_child_fact_base_are_in_its_relations() -> None:
+    """Derived atoms added to a fact base made by changed() are matched from its own
+    atoms, not taken from the parent's relation (which lacks them)."""
+    parent = FactBase([("p", "a"), ("p", "b")])
+    child = parent.changed(frozenset({("p", "a")}), [("p", "b")], [])
+    child.add([("d", "a")])
+    derived = Pattern(Atom("d", ("?x",)), {})
+    assert child.relation(derived).rows == [("a",)]
+    assert parent.relation(derived).rows == []
