@@ -13,6 +13,7 @@ may precompute anything linear in the size of the lifted task.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from collections.abc import Set as AbstractSet
 from typing import TYPE_CHECKING, ClassVar, Protocol
 
 if TYPE_CHECKING:
@@ -20,8 +21,11 @@ if TYPE_CHECKING:
 
 #: ``(predicate, object, ...)``.
 GroundAtom = tuple[str, ...]
-#: The fluent atoms that hold in a state (see the module docstring).
-LiftedState = frozenset[GroundAtom]
+#: The fluent atoms that hold in a state (see the module docstring): a frozenset, or
+#: for a large state a read-only set that shares most of its atoms with its relatives
+#: (:class:`~strips_framework.lifted.delta.DeltaState`). Heuristics test membership,
+#: iterate and take its length.
+LiftedState = AbstractSet[GroundAtom]
 #: An action instance: the action's name and its arguments, in parameter order.
 ActionInstance = tuple[str, tuple[str, ...]]
 

@@ -29,6 +29,7 @@ from __future__ import annotations
 import weakref
 from bisect import bisect_left, insort
 from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
+from collections.abc import Set as AbstractSet
 from operator import itemgetter
 from typing import Protocol
 
@@ -148,9 +149,9 @@ class FactBase:
         static: FactBase | None = None,
         static_predicates: frozenset[str] = frozenset(),
     ) -> None:
-        #: A set, or the state's own frozenset for a fact base made by
-        #: :meth:`changed` (copied into a set when :meth:`add` first adds to it).
-        self.atoms: set[GroundAtom] | frozenset[GroundAtom] = set(atoms)
+        #: A set, or the state itself for a fact base made by :meth:`changed`
+        #: (copied into a set when :meth:`add` first adds to it).
+        self.atoms: AbstractSet[GroundAtom] = set(atoms)
         # Filed by predicate and arity (a prover's task may use a name at two arities).
         by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
         for atom in sorted(self.atoms):  # so that no answer's order depends on hashing
@@ -181,9 +182,9 @@ class FactBase:
         """Add (derived) atoms; the new ones, whose predicates' relations are rebuilt."""
         new = sorted({atom for atom in atoms if atom not in self.atoms})
         if new:
-            if isinstance(self.atoms, frozenset):
-                self.atoms = set(self.atoms)
-            self.atoms.update(new)
+            mine = self.atoms if isinstance(self.atoms, set) else set(self.atoms)
+            mine.update(new)
+            self.atoms = mine
             touched = set()
             for atom in new:
                 self._by_predicate.setdefault((atom[0], len(atom)), []).append(atom)
@@ -194,7 +195,7 @@ class FactBase:
         return new
 
     def changed(
-        self, state: frozenset[GroundAtom], removed: Collection[GroundAtom], added: Collection[GroundAtom]
+        self, state: AbstractSet[GroundAtom], removed: Collection[GroundAtom], added: Collection[GroundAtom]
     ) -> FactBase:
         """The fact base of ``state``, which this one's state becomes by losing
         ``removed`` and gaining ``added`` (none of a static predicate); equal to one made

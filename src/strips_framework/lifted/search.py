@@ -40,6 +40,7 @@ from strips_framework.lifted.components import (
     LiftedEstimator,
     LiftedState,
 )
+from strips_framework.lifted.delta import successor
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
 from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
@@ -135,15 +136,7 @@ class LiftedRun:
         """State ``number``, a child of ``parent`` by :meth:`child`, and its fact base,
         made from the parent's, and remembered."""
         state, facts = self.parent(parent)
-        # ``removed`` lies in the state and ``added`` outside it. A union and a
-        # difference copy the parent's hash table as it is (entries and stored hashes;
-        # the union first, as a table with deleted entries is not copied that way); a
-        # symmetric difference would insert every atom again, hashing each tuple anew,
-        # which costs some three times more on a state of a thousand atoms.
-        if added:
-            state = state.union(added)
-        if removed:
-            state = state.difference(removed)
+        state = successor(state, removed, added)  # (``removed`` in it, ``added`` not)
         facts = self.successors.facts_after(state, facts, removed, added)
         self.remember(number, state, facts)
         return state, facts
