@@ -43,7 +43,7 @@ from strips_framework.lifted.components import (
 from strips_framework.lifted.delta import successor
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
-from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
+from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace, StateKey
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.options import Configurable, Option
@@ -117,17 +117,15 @@ class LiftedRun:
 
     def child(
         self, parent: int, step: ActionInstance
-    ) -> tuple[bytes, int, set[GroundAtom], set[GroundAtom]]:
-        """The packing of the state ``step`` leads to from state ``parent``, its path
-        cost, and the atoms it lost and gained (for :meth:`child_facts`). The packing is
-        the parent's with the few changed atoms' numbers taken out and put in, not the
-        whole state's numbers looked up again; the state itself is made only for a
+    ) -> tuple[StateKey, int, set[GroundAtom], set[GroundAtom]]:
+        """The duplicate-table key of the state ``step`` leads to from state
+        ``parent``, its path cost, and the atoms it lost and gained (for
+        :meth:`child_facts`). The key is made from the parent's and the changed atoms
+        only (:meth:`LiftedStateSpace.repack`); the state itself is made only for a
         child that is no duplicate (:meth:`child_facts`)."""
         state, facts = self.parent(parent)
         removed, added, cost = self.successors.change(state, facts, step)
-        packed = self.space.packed[parent]
-        if removed or added:
-            packed = self.space.repack(packed, removed, added)
+        packed = self.space.repack(parent, removed, added)
         return packed, self.space.g[parent] + cost, removed, added
 
     def child_facts(
