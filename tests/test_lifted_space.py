@@ -24,21 +24,23 @@ class _FewCodes(random.Random):
         return super().getrandbits(2)
 
 
-@pytest.mark.parametrize("collide", [False, True])
+@pytest.mark.parametrize("mode", ["whole", "changes", "colliding changes"])
 @pytest.mark.parametrize("seed", range(8))
 def test_duplicates_and_states_are_those_of_a_frozenset_table(
-    seed: int, collide: bool, monkeypatch: pytest.MonkeyPatch
+    seed: int, mode: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """A random search tree over 40 atoms (children of random stored states, a few
-    atoms changed, often back to a stored state): a key is found exactly when the
-    frozenset is, under the same number, and every stored state comes back whole, with
-    short checkpoint chains and few states kept rebuilt."""
+    atoms changed, often back to a stored state), its states stored whole or as
+    changes: a key is found exactly when the frozenset is, under the same number, and
+    every stored state comes back whole, with short checkpoint chains and few states
+    kept rebuilt."""
+    monkeypatch.setattr(space_module, "WHOLE", 10**9 if mode == "whole" else 0)
     monkeypatch.setattr(space_module, "CHECKPOINT", 3)
     monkeypatch.setattr(space_module, "REBUILT", 2)
     rng = random.Random(seed)
     universe = [("p", f"o{i}") for i in range(40)]
     space = LiftedStateSpace()
-    if collide:
+    if mode == "colliding changes":
         space._random = _FewCodes(seed)
     init = frozenset(rng.sample(universe, 20))
     reference: dict[frozenset, int] = {init: space.add(space.pack(init), NO_PARENT, None, 0)}
@@ -62,7 +64,10 @@ def test_duplicates_and_states_are_those_of_a_frozenset_table(
     assert found > 30 and len(states) > 100, (found, len(states))
     for state, number in reference.items():
         assert space.state(number) == state
-    assert max(space._depths) == 2 and 0 in space._depths[1:]
+    if mode == "whole":
+        assert all(type(key) is bytes for key in space.ids)
+    else:
+        assert max(space._depths) == 2 and 0 in space._depths[1:]
 
 
 @pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS])
@@ -70,8 +75,9 @@ def test_duplicates_and_states_are_those_of_a_frozenset_table(
 def test_a_search_finds_the_same_duplicates_with_colliding_hashes(
     strategy: type, seed: int, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """With hashes that mostly collide and short chains, a search stores, expands and
-    plans as with real hashes: the equality test decides, not the hash."""
+    """States stored as changes, with hashes that mostly collide and short chains: a
+    search stores, expands and plans as with its states stored whole (bytes compared):
+    the equality test decides, not the hash."""
     import sys
     from pathlib import Path
 
@@ -91,7 +97,8 @@ def test_a_search_finds_the_same_duplicates_with_colliding_hashes(
         s = result.statistics
         return result.status, result.plan, s.expanded, s.evaluated, s.generated, s.states
 
-    real = trace()
+    real = trace()  # (random tasks' states are small: stored whole)
+    monkeypatch.setattr(space_module, "WHOLE", 0)
     monkeypatch.setattr(space_module.random, "Random", _FewCodes)
     monkeypatch.setattr(space_module, "CHECKPOINT", 2)
     monkeypatch.setattr(space_module, "REBUILT", 1)

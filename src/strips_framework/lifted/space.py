@@ -1,19 +1,24 @@
 """The states a lifted search has reached, stored compactly.
 
-Atoms are numbered the first time any state holds them. A state is stored as its
-change from the state it was made from (the numbers of the atoms it lost and gained,
-packed 4 bytes each), and every :data:`CHECKPOINT`-th state along such a chain whole
-(the sorted numbers of its atoms): a state of n atoms costs about 4n / CHECKPOINT bytes
-plus its change and its table entries, instead of 4n (or the hash table of a frozenset
-of tuples, about 20 times more). :meth:`LiftedStateSpace.bytes_per_state` measures it.
+Atoms are numbered the first time any state holds them. A state of a task whose states
+hold :data:`WHOLE` atoms or more is stored as its change from the state it was made
+from (the numbers of the atoms it lost and gained, packed 4 bytes each), and every
+:data:`CHECKPOINT`-th state along such a chain whole (the sorted numbers of its atoms):
+a state of n atoms costs about 4n / CHECKPOINT bytes plus its change and its table
+entries, instead of 4n (or the hash table of a frozenset of tuples, about 20 times
+more). :meth:`LiftedStateSpace.bytes_per_state` measures it.
 
-The duplicate test hashes a state by its atoms' random 63-bit codes (a machine word: the
-hash as it is) XORed together
-(Zobrist hashing), which a successor updates by the few atoms that changed, so a new
-state is filed without reading its parent's atoms. Only when two hashes agree are the
-states' atom numbers rebuilt and compared, so the test is exact; states rebuilt lately
-are kept (:data:`REBUILT`) and a chain is rebuilt from the nearest of them, as the
-duplicates a search meets are mostly its recent states' relatives.
+The duplicate test of those hashes a state by its atoms' random 63-bit codes (a machine
+word: the hash as it is) XORed together (Zobrist hashing), which a successor updates by
+the few atoms that changed, so a new state is filed without reading its parent's atoms.
+Only when two hashes agree are the states' atom numbers rebuilt and compared, so the
+test is exact; states rebuilt lately are kept (:data:`REBUILT`) and a chain is rebuilt
+from the nearest of them, as the duplicates a search meets are mostly its recent
+states' relatives.
+
+Smaller states are stored whole, their packing (a ``bytes``) their key: hashed and
+compared in C, which costs less per state than the Python of a change's key, and takes
+about as little room.
 """
 
 from __future__ import annotations
@@ -32,6 +37,8 @@ NO_PARENT = -1
 CHECKPOINT = 32
 #: How many rebuilt states' atom numbers are kept.
 REBUILT = 64
+#: States are stored as changes when the first holds this many atoms or more.
+WHOLE = 64
 
 
 class StateKey:
@@ -99,7 +106,9 @@ class LiftedStateSpace:
         #: search depends on the run.
         self._codes: list[int] = []
         self._random = random.Random(0)
-        self.ids: dict[StateKey, int] = {}
+        self.ids: dict[StateKey | bytes, int] = {}
+        #: Whether states are stored as changes (decided by the first one's size).
+        self._changes: bool | None = None
         #: Per state: its packing (whole, or its change as the count of lost atoms and
         #: the lost and gained atoms' numbers), the state its change is from
         #: (NO_PARENT when whole), the length of that chain, and its hash.
@@ -131,9 +140,13 @@ class LiftedStateSpace:
             self._codes.append(self._random.getrandbits(63))
         return found
 
-    def pack(self, state: LiftedState) -> StateKey:
+    def pack(self, state: LiftedState) -> StateKey | bytes:
         """The key of ``state``, from all its atoms."""
         keys = array("I", sorted(map(self._number, state)))
+        if self._changes is None:
+            self._changes = len(keys) >= WHOLE
+        if not self._changes:
+            return keys.tobytes()
         code = 0
         codes = self._codes
         for number in keys:
@@ -142,11 +155,22 @@ class LiftedStateSpace:
 
     def repack(
         self, parent: int, removed: Iterable[GroundAtom], added: Iterable[GroundAtom]
-    ) -> StateKey:
+    ) -> StateKey | bytes:
         """The key of the state that stored state ``parent`` becomes by losing
         ``removed`` (atoms it holds) and gaining ``added`` (atoms it lacks), in time
-        linear in the changes."""
+        linear in the changes (and, for a state stored whole, a copy of its bytes)."""
         numbers = self._numbers
+        if not self._changes:
+            packed = self._stored[parent]
+            if removed or added:
+                keys = array("I")
+                keys.frombytes(packed)
+                for atom in removed:
+                    del keys[bisect_left(keys, numbers[atom])]
+                for atom in added:
+                    insort(keys, self._number(atom))
+                packed = keys.tobytes()
+            return packed
         lost = tuple(numbers[atom] for atom in removed)
         gained = tuple(map(self._number, added))
         code = self._hashes[parent]
@@ -189,9 +213,19 @@ class LiftedStateSpace:
     def state(self, number: int) -> LiftedState:
         return frozenset(map(self._atoms.__getitem__, self.numbers(number)))
 
-    def add(self, key: StateKey, parent: int, step: ActionInstance | None, g: int) -> int:
+    def add(self, key: StateKey | bytes, parent: int, step: ActionInstance | None, g: int) -> int:
         """Store the state of ``key`` (made by :meth:`pack` or :meth:`repack`)."""
         number = len(self._stored)
+        if isinstance(key, bytes):
+            self._stored.append(key)
+            self._bases.append(NO_PARENT)
+            self._depths.append(0)
+            self._payload += sys.getsizeof(key)
+            self.ids[key] = number
+            self.parents.append(parent)
+            self.steps.append(step)
+            self.g.append(g)
+            return number
         depth = self._depths[key.base] + 1 if key.whole is None else 0
         if depth < CHECKPOINT and key.whole is None:
             packed = array("I", (len(key.removed), *key.removed, *key.added)).tobytes()
@@ -237,8 +271,10 @@ class LiftedStateSpace:
             return 0.0
         count = len(self._stored)
         table = sys.getsizeof(self.ids) + sys.getsizeof(self._stored) + sys.getsizeof(self.steps)
-        table += sys.getsizeof(self.g) + count * (sys.getsizeof(StateKey.__new__(StateKey)) + 1)
-        table += (self.parents.itemsize + self._bases.itemsize + self._hashes.itemsize) * count
+        table += sys.getsizeof(self.g) + sys.getsizeof(self._hashes) + count
+        table += (self.parents.itemsize + self._bases.itemsize) * count
+        if self._changes:
+            table += count * sys.getsizeof(StateKey.__new__(StateKey))
         return (self._payload + table) / count
 
     def clear(self) -> None:
