@@ -39,6 +39,12 @@ from strips_framework.pddl.formulas import Atom
 
 Row = tuple[str, ...]
 
+#: A relation (or index) a fact base lacks is made from its parent's while at most this
+#: many fact bases in a row lack it, and the relation has at least :data:`SHARED` rows
+#: (atoms): fewer are matched (indexed) again at less cost than walking and updating.
+CHAIN = 8
+SHARED = 32
+
 
 class Relation:
     """Rows over ``columns`` (variables), with hash indexes on column subsets made on
@@ -59,23 +65,26 @@ class Relation:
         """The rows by their values at ``positions`` (a single value for one position):
         the index of the relation this one was made from, updated at the changed rows,
         when that one is still alive (made there first, so that the relations made
-        from one share its building), else built from the rows."""
+        from one share its building), else built from the rows (also when they are
+        fewer than :data:`SHARED`, or :data:`CHAIN` relations lack it)."""
         found = self._indexes.get(positions)
+        if found is not None:
+            return found
+        chain: list[Relation] = [self]  # the relations lacking it, nearest first
+        while len(chain) < CHAIN and len(chain[-1].rows) >= SHARED:
+            base = chain[-1]._base() if chain[-1]._base is not None else None
+            if base is None:
+                break
+            found = base._indexes.get(positions)
+            if found is not None:
+                break
+            chain.append(base)
         if found is None:
-            base = self._base() if self._base is not None else None
-            if base is not None:
-                found = _index_changed(base.index(positions), positions, *self._change)
-            else:
-                found = {}
-                key = _getter(positions)
-                for row in self.rows:
-                    k = key(row)
-                    bucket = found.get(k)
-                    if bucket is None:
-                        found[k] = [row]
-                    else:
-                        bucket.append(row)
-            self._indexes[positions] = found
+            found = _indexed(chain[-1].rows, positions)
+            chain.pop()._indexes[positions] = found
+        for relation in reversed(chain):
+            found = _index_changed(found, positions, *relation._change)
+            relation._indexes[positions] = found
         return found
 
     def renamed(self, columns: tuple[str, ...]) -> Relation:
@@ -105,8 +114,25 @@ class Relation:
         return child
 
 
+def _indexed(rows: list[Row], positions: tuple[int, ...]) -> dict[object, list[Row]]:
+    """``rows`` by their values at ``positions``, each bucket in the rows' order."""
+    found: dict[object, list[Row]] = {}
+    key = _getter(positions)
+    for row in rows:
+        k = key(row)
+        bucket = found.get(k)
+        if bucket is None:
+            found[k] = [row]
+        else:
+            bucket.append(row)
+    return found
+
+
 def _index_changed(
-    index: dict[object, list[Row]], positions: tuple[int, ...], removed: Sequence[Row], added: Sequence[Row]
+    index: dict[object, list[Row]],
+    positions: tuple[int, ...],
+    removed: Sequence[Row],
+    added: Sequence[Row],
 ) -> dict[object, list[Row]]:
     """A copy of ``index`` (on ``positions``) less the rows ``removed`` and with the rows
     ``added``, its buckets kept in filing order; the untouched buckets are shared."""
@@ -195,7 +221,10 @@ class FactBase:
         return new
 
     def changed(
-        self, state: AbstractSet[GroundAtom], removed: Collection[GroundAtom], added: Collection[GroundAtom]
+        self,
+        state: AbstractSet[GroundAtom],
+        removed: Collection[GroundAtom],
+        added: Collection[GroundAtom],
     ) -> FactBase:
         """The fact base of ``state``, which this one's state becomes by losing
         ``removed`` and gaining ``added`` (none of a static predicate); equal to one made
@@ -244,7 +273,9 @@ class FactBase:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
         relation = self._made(pattern) if found is None else found[1]
-        return relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
+        return (
+            relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
+        )
 
     def _made(self, pattern: Pattern) -> Relation:
         """The relation of ``pattern``'s key (of a fluent predicate), which this fact
@@ -260,6 +291,7 @@ class FactBase:
         chain: list[FactBase] = []  # the fact bases lacking it, nearest first
         facts: FactBase | None = self
         base: Relation | None = None
+        predicate = (pattern.predicate, pattern.size)
         while facts is not None:
             found = facts._relations.get(pattern.key)
             if found is not None:
@@ -271,6 +303,8 @@ class FactBase:
                 facts._relations[pattern.key] = (pattern, base)
                 break
             chain.append(facts)
+            if len(chain) == CHAIN or len(facts._by_predicate.get(predicate, ())) < SHARED:
+                break
             facts = facts._parent() if facts._parent is not None else None
         if base is None:
             first = chain.pop()
@@ -306,7 +340,17 @@ class Pattern:
     for, e.g., logistics' ``(at ?truck ?loc)`` and ``(at ?truck ?from)``: one copy to
     update when a truck moves."""
 
-    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size", "ground")
+    __slots__ = (
+        "predicate",
+        "key",
+        "columns",
+        "taken",
+        "checks",
+        "repeats",
+        "typed",
+        "size",
+        "ground",
+    )
 
     def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
         self.predicate = atom.predicate
@@ -369,7 +413,9 @@ class Pattern:
 class QueryEngine(Protocol):
     """Answers conjunctive queries over a fact base (the lifted search's prover)."""
 
-    def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+    def answers(
+        self, query: Query, facts: FactBase, seed: dict[str, str] | None = None
+    ) -> list[Row]:
         """Every binding of ``query.variables`` under which the query holds in
         ``facts`` (extending ``seed``, whose variables are already bound), each once,
         in an order that does not depend on hashing."""
@@ -444,7 +490,9 @@ class JoinEngine:
                 return None
         return relations
 
-    def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+    def answers(
+        self, query: Query, facts: FactBase, seed: dict[str, str] | None = None
+    ) -> list[Row]:
         prepared = self._prepared(query, facts, seed)
         if prepared is None:
             return []
@@ -498,13 +546,17 @@ class JoinEngine:
                 found = self._ranges.get((variable, domain))
                 if found is None:
                     values = sorted(domain) if domain is not None else self.objects
-                    found = self._ranges[(variable, domain)] = Relation((variable,), [(v,) for v in values])
+                    found = self._ranges[(variable, domain)] = Relation(
+                        (variable,), [(v,) for v in values]
+                    )
                 relations.append(found)
                 bound.add(variable)
         plan = self._plans.get((query, seeded))
         if plan is None:
             edges = [frozenset(r.columns) for r in relations]
-            plan = self._plans[(query, seeded)] = _Plan(join_tree(edges) if self.yannakakis else None)
+            plan = self._plans[(query, seeded)] = _Plan(
+                join_tree(edges) if self.yannakakis else None
+            )
         return relations, plan
 
     def _acyclic(
@@ -521,7 +573,10 @@ class JoinEngine:
         root = tree[-1][1] if tree else 0
         order = [root] + [child for child, _ in reversed(tree)]
         return self._join_in_order(
-            [Relation(columns[i], rows[i]) if rows[i] is not relations[i].rows else relations[i] for i in order],
+            [
+                Relation(columns[i], rows[i]) if rows[i] is not relations[i].rows else relations[i]
+                for i in order
+            ],
             query,
             facts,
         )
@@ -637,7 +692,9 @@ def _extended(row: Row, pick: Callable, matches: list[Row]) -> Iterator[Row]:
         yield row + pick(match)
 
 
-def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+def _reduce(
+    relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]
+) -> list[Row]:
     """The semi-join of ``rows`` (``relation``'s, perhaps already reduced) with
     ``other_rows``. When the relation is unreduced and many times larger, its index on
     the shared columns is probed with the few keys of the other side, so the cost follows
@@ -684,10 +741,14 @@ def _narrowed(relations: list[Relation], tree: list[tuple[int, int]]) -> list[Re
             rows[parent] = _reduce(ours, rows[parent], theirs.columns, rows[child])
             if not rows[parent]:
                 return None
-    return [r if rows[i] is r.rows else Relation(r.columns, rows[i]) for i, r in enumerate(relations)]
+    return [
+        r if rows[i] is r.rows else Relation(r.columns, rows[i]) for i, r in enumerate(relations)
+    ]
 
 
-def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+def _semijoin(
+    columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]
+) -> list[Row]:
     """The rows that agree with some row of ``other_rows`` on the shared columns."""
     shared = [c for c in columns if c in other]
     if not shared:
@@ -722,8 +783,8 @@ class _Filters:
                 atom: Atom = item  # type: ignore[assignment]
                 getters = [_term_getter(t, columns) for t in atom.args]
                 tests.append(
-                    lambda row, p=atom.predicate, g=getters, holds=self.facts.holds: not holds(
-                        (p, *[get(row) for get in g])
+                    lambda row, p=atom.predicate, g=getters, holds=self.facts.holds: (
+                        not holds((p, *[get(row) for get in g]))
                     )
                 )
         return tests
@@ -755,9 +816,7 @@ class _Filters:
                 holds = self.facts.holds
                 getters = [_term_getter(t, columns) for t in atom.args]
                 predicate = atom.predicate
-                rows = [
-                    row for row in rows if not holds((predicate, *[g(row) for g in getters]))
-                ]
+                rows = [row for row in rows if not holds((predicate, *[g(row) for g in getters]))]
         return rows
 
 
