@@ -15,7 +15,7 @@ from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.prover import JoinProver, ProverEngine
-from strips_framework.lifted import query
+from strips_framework.lifted import query as query_module
 from strips_framework.lifted.query import (
     FactBase,
     JoinEngine,
@@ -784,7 +784,7 @@ def test_a_chain_of_fact_bases_matches_and_indexes_a_relation_once(
     task = successors.task
     matched: list[str] = []
     built: list[int] = []
-    match, indexed = Pattern.match, query._indexed
+    match, indexed = Pattern.match, query_module._indexed
 
     def counted_match(self: Pattern, atoms: object) -> Relation:
         matched.append(self.predicate)
@@ -810,7 +810,7 @@ def test_a_chain_of_fact_bases_matches_and_indexes_a_relation_once(
             grandchild = (state - out) | into
             family.append((grandchild, facts.changed(grandchild, out, into)))
     monkeypatch.setattr(Pattern, "match", counted_match)
-    monkeypatch.setattr(query, "_indexed", counted_index)
+    monkeypatch.setattr(query_module, "_indexed", counted_index)
     for state, facts in reversed(family):
         assert successors.applicable(facts) == successors.applicable(
             FactBase(state, successors.static, task.static)
@@ -832,7 +832,7 @@ def test_a_chain_of_fact_bases_matches_and_indexes_a_relation_once(
         out, into, _ = successors.change(kid, kids[-1], down)
         grandkids.append(kids[-1].changed((kid - out) | into, out, into))
     monkeypatch.setattr(Pattern, "match", counted_match)
-    monkeypatch.setattr(query, "_indexed", counted_index)
+    monkeypatch.setattr(query_module, "_indexed", counted_index)
     for grandkid in grandkids:
         successors.applicable(grandkid)
     assert matched.count("on") == 1, matched
@@ -845,7 +845,7 @@ def test_atoms_added_to_a_child_fact_base_are_in_its_relations() -> None:
     parent = FactBase([("p", "a"), ("p", "b")])
     child = parent.changed(frozenset({("p", "a")}), [("p", "b")], [])
     derived = sorted(
-        ("d", f"o{i:02}") for i in range(2 * query.SHARED)
+        ("d", f"o{i:02}") for i in range(2 * query_module.SHARED)
     )  # (many: not matched again)
     child.add(derived)
     pattern = Pattern(Atom("d", ("?x",)), {})
