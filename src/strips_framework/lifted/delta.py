@@ -61,6 +61,18 @@ class DeltaState(AbstractSet[GroundAtom]):
     def __repr__(self) -> str:
         return f"DeltaState({set(self)!r})"
 
+    def __sub__(self, other: object) -> frozenset[GroundAtom]:
+        if not isinstance(other, Iterable):
+            return NotImplemented
+        others = other if isinstance(other, AbstractSet) else frozenset(other)
+        # In C, as a frozenset's difference (e.g. novelty's "atoms not seen yet").
+        return self._base.difference(self._removed, others).union(self._added.difference(others))
+
+    def __or__(self, other: object) -> frozenset[GroundAtom]:
+        if not isinstance(other, Iterable):
+            return NotImplemented
+        return self._base.difference(self._removed).union(self._added, other)
+
     @classmethod
     def _from_iterable(cls, atoms: Iterable[GroundAtom]) -> frozenset[GroundAtom]:
         return frozenset(atoms)
