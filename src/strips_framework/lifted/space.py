@@ -171,7 +171,7 @@ class LiftedStateSpace:
                     insort(keys, self._number(atom))
                 packed = keys.tobytes()
             return packed
-        lost = tuple(numbers[atom] for atom in removed)
+        lost = tuple(map(numbers.__getitem__, removed))
         gained = tuple(map(self._number, added))
         code = self._hashes[parent]
         codes = self._codes
