@@ -50,6 +50,9 @@ def test_a_walk_of_changes_holds_the_atoms_of_the_frozensets(seed: int) -> None:
         assert [a in state for a in probes] == [a in reference for a in probes]
         assert state - removed == reference - removed and type(state - removed) is frozenset
         assert state | added == reference | added and state & reference == reference
+        assert state.union(added, removed) == reference.union(added, removed)
+        assert state.difference(removed, added) == reference.difference(removed, added)
+        assert state.intersection(probes) == reference.intersection(probes)
         assert space.pack(state) == space.pack(reference)
     assert overlays > 200 and checkpoints >= 3, (overlays, checkpoints)
 

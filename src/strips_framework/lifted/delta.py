@@ -73,6 +73,16 @@ class DeltaState(AbstractSet[GroundAtom]):
             return NotImplemented
         return self._base.difference(self._removed).union(self._added, other)
 
+    # frozenset's methods, for code written against frozenset states (each in C).
+    def union(self, *others: Iterable[GroundAtom]) -> frozenset[GroundAtom]:
+        return self._base.difference(self._removed).union(self._added, *others)
+
+    def difference(self, *others: Iterable[GroundAtom]) -> frozenset[GroundAtom]:
+        return self._base.difference(self._removed, *others).union(self._added.difference(*others))
+
+    def intersection(self, *others: Iterable[GroundAtom]) -> frozenset[GroundAtom]:
+        return self._base.difference(self._removed).union(self._added).intersection(*others)
+
     @classmethod
     def _from_iterable(cls, atoms: Iterable[GroundAtom]) -> frozenset[GroundAtom]:
         return frozenset(atoms)
