@@ -13,11 +13,19 @@ import pytest
 
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
+from strips_framework.lifted import query as query_module
 from strips_framework.lifted.alt_bfws import LiftedAlternatedBFWS
 from strips_framework.lifted.goal_count import LiftedGoalCount
 from strips_framework.lifted.novelty import Novelty
 from strips_framework.lifted.prover import JoinProver, ProverEngine
-from strips_framework.lifted.query import FactBase, JoinEngine, Pattern, Relation, _reduce, _semijoin
+from strips_framework.lifted.query import (
+    FactBase,
+    JoinEngine,
+    Pattern,
+    Relation,
+    _reduce,
+    _semijoin,
+)
 from strips_framework.lifted.search import LiftedBFWS, LiftedLazyGreedySearch
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.lifted.task import LiftedTask
@@ -99,7 +107,9 @@ def test_yannakakis_and_greedy_joins_agree(seed: int) -> None:
     full = Successors(task, JoinEngine(task.objects))
     greedy = Successors(task, JoinEngine(task.objects, yannakakis=False))
     for state in _reachable(full, 20):
-        assert sorted(full.applicable(full.facts(state))) == sorted(greedy.applicable(greedy.facts(state)))
+        assert sorted(full.applicable(full.facts(state))) == sorted(
+            greedy.applicable(greedy.facts(state))
+        )
 
 
 def _filed(facts: FactBase) -> tuple[dict, dict]:
@@ -146,7 +156,12 @@ def test_a_childs_fact_base_made_from_its_parents_equals_one_made_from_scratch()
                     assert rows == theirs[1][key][0], (seed, step, key)
                     relation = scratch._relations[key][1]
                     for positions, index in built.items():
-                        assert index == dict(relation.index(positions)), (seed, step, key, positions)
+                        assert index == dict(relation.index(positions)), (
+                            seed,
+                            step,
+                            key,
+                            positions,
+                        )
                         indexes += 1
                     updated += rows is not before[1][key][0]
                 after = _filed(parent)  # (the child's joins may add indexes to shared relations)
@@ -155,8 +170,12 @@ def test_a_childs_fact_base_made_from_its_parents_equals_one_made_from_scratch()
                     assert after[1][key][0] == rows, "the parent's relation changed"
                     assert all(after[1][key][1][p] == index for p, index in built.items())
                 incremental = successors.facts_after(child, facts, removed, added)
-                assert successors.applicable(incremental) == successors.applicable(successors.facts(child))
-                assert successors.is_goal(incremental) == successors.is_goal(successors.facts(child))
+                assert successors.applicable(incremental) == successors.applicable(
+                    successors.facts(child)
+                )
+                assert successors.is_goal(incremental) == successors.is_goal(
+                    successors.facts(child)
+                )
     assert updated > 100 and indexes > 100, (updated, indexes)
 
 
@@ -183,8 +202,8 @@ def _towers(blocks: int) -> PddlTask:
         tower = names[start : start + 10]
         init += [f"(ontable {tower[0]})", f"(clear {tower[-1]})"]
         init += [f"(on {upper} {lower})" for lower, upper in zip(tower, tower[1:])]
-    problem = f"""(define (problem towers) (:domain blocksworld) (:objects {' '.join(names)} - block)
-     (:init {' '.join(init)}) (:goal (and (on b9 b19) (on b0 b29))))"""
+    problem = f"""(define (problem towers) (:domain blocksworld) (:objects {" ".join(names)} - block)
+     (:init {" ".join(init)}) (:goal (and (on b9 b19) (on b0 b29))))"""
     return parse_task(domain, problem, "domain.pddl", "towers.pddl")
 
 
@@ -227,7 +246,9 @@ def test_novelty_from_a_parents_changes_equals_novelty_from_the_whole_state(seed
     assert 10 < novel < 290
 
 
-def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     """The search's hints (a child's gained atoms, given only under its parent's
     estimate) leave every novelty, and so the whole search, as the whole-state test."""
     tasks = [random_pddl_task(seed) for seed in range(25)]
@@ -237,7 +258,9 @@ def test_bfws_with_novelty_from_changes_searches_as_with_whole_states(monkeypatc
         found = []
         for pddl in tasks:
             result = LiftedBFWS(preferred=False).search_task(
-                Successors(LiftedTask(pddl)), LiftedGoalCount().for_task(pddl), Limits(time=30, expansions=300)
+                Successors(LiftedTask(pddl)),
+                LiftedGoalCount().for_task(pddl),
+                Limits(time=30, expansions=300),
             )
             found.append((result.status, result.plan, result.statistics.expanded))
         return found
@@ -262,7 +285,9 @@ def test_resolution_prover_as_the_engine_finds_the_same_instances(seed: int) -> 
     joins = Successors(task)
     prover = Successors(task, ProverEngine(_resolution(), task.objects))
     for state in _reachable(joins, 6):
-        assert sorted(prover.applicable(prover.facts(state))) == sorted(joins.applicable(joins.facts(state)))
+        assert sorted(prover.applicable(prover.facts(state))) == sorted(
+            joins.applicable(joins.facts(state))
+        )
         assert _lifted_moves(prover, state) == _lifted_moves(joins, state)
 
 
@@ -382,7 +407,8 @@ def test_join_prover_answers_like_resolution_on_random_horn_models() -> None:
         rng = random.Random(seed)
         objects = ["a", "b", "c"]
         facts = {
-            (rng.choice("PQ"), rng.choice(objects), rng.choice(objects)) for _ in range(rng.randint(2, 9))
+            (rng.choice("PQ"), rng.choice(objects), rng.choice(objects))
+            for _ in range(rng.randint(2, 9))
         }
         axioms = [Clause([(True, atom)]) for atom in sorted(facts)]
         if rng.random() < 0.7:  # R(x, z) <- P(x, y) & Q(y, z)
@@ -391,7 +417,11 @@ def test_join_prover_answers_like_resolution_on_random_horn_models() -> None:
             axioms.append(Clause([(False, ("R", 0, 1)), (False, ("P", 1, 2)), (True, ("S", 0, 2))]))
         m, n = Param("m"), Param("n")
         goal = rng.choice(
-            [[(False, ("R", m, n))], [(False, ("P", m, n)), (False, ("Q", n, m))], [(False, ("S", "a", m))]]
+            [
+                [(False, ("R", m, n))],
+                [(False, ("P", m, n)), (False, ("Q", n, m))],
+                [(False, ("S", "a", m))],
+            ]
         )
         task = ProofTask(axioms, [Clause(goal)], effort=3000, max_answers=100, unique_names=True)
         expected = resolution.prove(task)
@@ -411,11 +441,18 @@ def _blocks(count: int, goal: str) -> str:
 
 @pytest.mark.parametrize(
     ("cheap", "chosen", "why"),
-    [(10**6, "lazy-gbfs", "grounding looks cheap"), (50, "lifted-gbfs", "grounding looks expensive")],
+    [
+        (10**6, "lazy-gbfs", "grounding looks cheap"),
+        (50, "lifted-gbfs", "grounding looks expensive"),
+    ],
 )
 def test_default_strategy_grounds_only_cheap_tasks_and_says_why(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
-    cheap: int, chosen: str, why: str,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+    cheap: int,
+    chosen: str,
+    why: str,
 ) -> None:
     """Ten blocks make 220 operators: ground under a limit of a million, lifted
     under one of 50 (the real limit is 250,000; a task that large would be slow here)."""
@@ -446,7 +483,9 @@ def test_the_estimate_sends_a_thousand_blocks_to_the_lifted_search() -> None:
     assert estimated_operators(small) <= CHEAP_GROUNDING < estimated_operators(large)
 
 
-def test_a_chosen_strategy_is_not_second_guessed(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_a_chosen_strategy_is_not_second_guessed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     from strips_framework.cli.main import main
 
     problem = tmp_path / "problem.pddl"
@@ -477,7 +516,9 @@ def test_recursive_derived_predicates_reach_their_fixpoint() -> None:
     task = LiftedTask(parse_task(CHAIN, _chain(6)))
     successors = Successors(task)
     facts = successors.facts(task.init)
-    assert {atom for atom in facts.atoms if atom[0] == "reach"} == {("reach", f"r{i}") for i in range(6)}
+    assert {atom for atom in facts.atoms if atom[0] == "reach"} == {
+        ("reach", f"r{i}") for i in range(6)
+    }
 
 
 def test_the_estimate_counts_static_atoms_not_object_pairs() -> None:
@@ -497,7 +538,9 @@ class _Constant:
 
 
 @pytest.mark.parametrize("strategy", [LiftedLazyGreedySearch, LiftedBFWS, LiftedAlternatedBFWS])
-def test_each_reachable_state_is_stored_once_and_exhausting_them_proves_unsolvable(strategy: type) -> None:
+def test_each_reachable_state_is_stored_once_and_exhausting_them_proves_unsolvable(
+    strategy: type,
+) -> None:
     domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
     successors = Successors(LiftedTask(parse_task(domain, _blocks(4, "(and (on b0 b0))"))))
     result = strategy().search_task(successors, _Constant(), Limits(time=30))
@@ -519,9 +562,20 @@ def test_the_search_does_not_depend_on_hash_order(tmp_path: Path) -> None:
     outputs = []
     for seed in ("1", "2"):
         done = subprocess.run(
-            [sys.executable, "-c", "import sys; from strips_framework.cli.main import main; sys.exit(main())",
-             "solve", str(domain), str(problem), "--config", str(config)],
-            capture_output=True, text=True, env={**os.environ, "PYTHONHASHSEED": seed}, check=True,
+            [
+                sys.executable,
+                "-c",
+                "import sys; from strips_framework.cli.main import main; sys.exit(main())",
+                "solve",
+                str(domain),
+                str(problem),
+                "--config",
+                str(config),
+            ],
+            capture_output=True,
+            text=True,
+            env={**os.environ, "PYTHONHASHSEED": seed},
+            check=True,
         )
         timings = ("; time:", "; phases:", "; peak memory:")
         outputs.append([line for line in done.stdout.splitlines() if not line.startswith(timings)])
@@ -591,7 +645,9 @@ def test_drawing_successors_as_needed_searches_as_listing_them(heuristic: str, s
     assert drawn == listed
 
 
-def test_a_cursor_whose_stream_was_let_go_resumes_where_it_stopped(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_cursor_whose_stream_was_let_go_resumes_where_it_stopped(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     """With room for one live stream, every cursor but the last used loses its stream
     and makes it again, skipping the instances it took: the search is unchanged."""
     from strips_framework.lifted import search
@@ -624,7 +680,9 @@ def test_a_stream_narrowed_to_a_few_keys_draws_the_listed_instances_in_order(see
     where = [rng.choice(spots) for _ in vehicles]
     init = [f"(at {v} {p})" for v, p in zip(vehicles, where)]
     shared = where if seed % 4 else places[1:]  # where the first parcel lies
-    init += [f"(parcel {k} {rng.choice(places[1:] if seed % 4 == 0 else places)})" for k in parcels[1:]]
+    init += [
+        f"(parcel {k} {rng.choice(places[1:] if seed % 4 == 0 else places)})" for k in parcels[1:]
+    ]
     init.append(f"(parcel {parcels[0]} {rng.choice(shared)})")
     objects = " ".join(places + vehicles + parcels)
     problem = f"(define (problem p) (:domain depot) (:objects {objects}) (:init {' '.join(init)}) (:goal (in k0 v000)))"
@@ -648,11 +706,19 @@ def test_patterns_differing_only_in_variable_names_share_one_relation() -> None:
     one made from scratch."""
     trucks, places = frozenset({"t1", "t2", "t3"}), frozenset({"a", "b", "c"})
     domains = {"?t": trucks, "?l": places, "?f": places, "?p": frozenset({"k"}), "?x": None}
-    atoms = [("at", "t1", "a"), ("at", "t2", "b"), ("at", "t3", "c"), ("at", "k", "a"), ("at", "b", "b")]
+    atoms = [
+        ("at", "t1", "a"),
+        ("at", "t2", "b"),
+        ("at", "t3", "c"),
+        ("at", "k", "a"),
+        ("at", "b", "b"),
+    ]
     facts = FactBase(atoms)
 
     def relation(base: FactBase, *args: str) -> Relation:
-        return base.relation(Pattern(Atom("at", args), {v: d for v, d in domains.items() if d is not None}))
+        return base.relation(
+            Pattern(Atom("at", args), {v: d for v, d in domains.items() if d is not None})
+        )
 
     loc, origin = relation(facts, "?t", "?l"), relation(facts, "?t", "?f")
     assert (loc.columns, origin.columns) == (("?t", "?l"), ("?t", "?f"))
@@ -666,3 +732,124 @@ def test_patterns_differing_only_in_variable_names_share_one_relation() -> None:
     child = facts.changed(state, *moved)
     assert relation(child, "?t", "?f").rows == relation(FactBase(state), "?t", "?f").rows
     assert relation(child, "?t", "?l").rows is relation(child, "?t", "?f").rows
+
+
+def test_relations_a_parent_lacked_are_made_from_its_own_and_equal_a_rebuild() -> None:
+    """A lazy search makes a state's first children before the state asks for all its
+    relations: a child's missing relation (and a derived relation's missing index) is
+    then made in the parent, while it lives, and updated by the child's changes, so the
+    siblings share the parent's matching. Each such relation and index is the one made
+    from scratch, and a chain of fact bases matches each pattern once."""
+    made = chains = 0
+    for seed in range(20):
+        task = LiftedTask(random_pddl_task(seed))
+        successors = Successors(task)
+        queries = [q for schema in task.actions for q in schema.precondition] + list(task.goal)
+        for state in _reachable(successors, 8):
+            # The fluent atoms only (derived ones would make changed() a rebuild's
+            # equal only without axioms), nothing asked yet.
+            parent = FactBase(state, successors.static, task.static)
+            generations = [(state, parent)]
+            for _ in range(3):  # children, grandchildren, ..., none asking anything yet
+                at, facts = generations[-1]
+                steps = successors.applicable(successors.facts(at))
+                if not steps:
+                    break
+                removed, added, _ = successors.change(
+                    at, facts, steps[len(generations) % len(steps)]
+                )
+                child = (at - removed) | added
+                generations.append((child, facts.changed(child, removed, added)))
+            chains += len(generations) > 2
+            for at, facts in reversed(generations):  # the youngest asks first
+                scratch = FactBase(at, successors.static, task.static)
+                for query in queries:
+                    got = successors.engine.answers(query, facts)
+                    assert got == successors.engine.answers(query, scratch), (seed, query)
+                for key, (rows, indexes) in _filed(facts)[1].items():
+                    theirs = scratch.relation(facts._relations[key][0])
+                    assert rows == theirs.rows, (seed, key)
+                    for positions, index in indexes.items():
+                        assert index == dict(theirs.index(positions)), (seed, key, positions)
+                        made += 1
+    assert chains > 20 and made > 100, (chains, made)
+
+
+def test_a_chain_of_fact_bases_matches_and_indexes_a_relation_once(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Sixty blocks in towers: the initial state's children and grandchildren are made
+    before anything but the goal is asked of it; when they then list their successors,
+    the ``on`` relation is matched once (in the initial state's fact base) and its index
+    built once, the others made from those at the cost of their changes."""
+    successors = Successors(LiftedTask(_towers(60)))
+    task = successors.task
+    matched: list[str] = []
+    built: list[int] = []
+    match, indexed = Pattern.match, query_module._indexed
+
+    def counted_match(self: Pattern, atoms: object) -> Relation:
+        matched.append(self.predicate)
+        return match(self, atoms)
+
+    def counted_index(rows: list, positions: tuple[int, ...]) -> dict:
+        if len(rows) > 20:  # (a narrowed relation is made per join, and small)
+            built.append(len(rows[0]))
+        return indexed(rows, positions)
+
+    root = successors.facts(task.init)
+    successors.is_goal(root)
+    steps = successors.applicable(successors.facts(task.init))
+    assert len(steps) == 6  # one unstack per tower
+    family = []
+    for step in steps:
+        removed, added, _ = successors.change(task.init, root, step)
+        state = (task.init - removed) | added
+        facts = root.changed(state, removed, added)
+        family.append((state, facts))
+        for grandstep in successors.applicable(successors.facts(state))[:2]:
+            out, into, _ = successors.change(state, facts, grandstep)
+            grandchild = (state - out) | into
+            family.append((grandchild, facts.changed(grandchild, out, into)))
+    monkeypatch.setattr(Pattern, "match", counted_match)
+    monkeypatch.setattr(query_module, "_indexed", counted_index)
+    for state, facts in reversed(family):
+        assert successors.applicable(facts) == successors.applicable(
+            FactBase(state, successors.static, task.static)
+        )
+    matched.clear()
+    built.clear()
+    for state, facts in family:  # (the scratch fact bases above are let go)
+        assert successors.applicable(facts)
+    assert not matched and not built
+    monkeypatch.undo()
+    fresh = successors.facts(task.init)
+    kids, grandkids = [], []
+    for step in steps:  # each picks up the top of a tower and puts it down
+        removed, added, _ = successors.change(task.init, fresh, step)
+        kid = (task.init - removed) | added
+        kids.append(fresh.changed(kid, removed, added))
+        down = successors.applicable(successors.facts(kid))[0]
+        assert down[0] == "put-down"
+        out, into, _ = successors.change(kid, kids[-1], down)
+        grandkids.append(kids[-1].changed((kid - out) | into, out, into))
+    monkeypatch.setattr(Pattern, "match", counted_match)
+    monkeypatch.setattr(query_module, "_indexed", counted_index)
+    for grandkid in grandkids:
+        successors.applicable(grandkid)
+    assert matched.count("on") == 1, matched
+    assert built == [2], built  # (the on relation's rows are pairs)
+
+
+def test_atoms_added_to_a_child_fact_base_are_in_its_relations() -> None:
+    """Derived atoms added to a fact base made by changed() are matched from its own
+    atoms, not taken from the parent's relation (which lacks them)."""
+    parent = FactBase([("p", "a"), ("p", "b")])
+    child = parent.changed(frozenset({("p", "a")}), [("p", "b")], [])
+    derived = sorted(
+        ("d", f"o{i:02}") for i in range(2 * query_module.SHARED)
+    )  # (many: not matched again)
+    child.add(derived)
+    pattern = Pattern(Atom("d", ("?x",)), {})
+    assert child.relation(pattern).rows == [atom[1:] for atom in derived]
+    assert parent.relation(pattern).rows == []

@@ -17,6 +17,7 @@ which a search reaches through :func:`with_guidance`, so any estimator works wit
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from collections.abc import Set as AbstractSet
 from typing import TYPE_CHECKING, ClassVar, Protocol
 
 from strips_framework.records import Record
@@ -26,8 +27,11 @@ if TYPE_CHECKING:
 
 #: ``(predicate, object, ...)``.
 GroundAtom = tuple[str, ...]
-#: The fluent atoms that hold in a state (see the module docstring).
-LiftedState = frozenset[GroundAtom]
+#: The fluent atoms that hold in a state (see the module docstring): a frozenset, or
+#: for a large state a read-only set that shares most of its atoms with its relatives
+#: (:class:`~strips_framework.lifted.delta.DeltaState`). Heuristics test membership,
+#: iterate and take its length.
+LiftedState = AbstractSet[GroundAtom]
 #: An action instance: the action's name and its arguments, in parameter order.
 ActionInstance = tuple[str, tuple[str, ...]]
 

@@ -26,8 +26,10 @@ a relation is built once per relation (so once per task for a static one).
 
 from __future__ import annotations
 
+import weakref
 from bisect import bisect_left, insort
 from collections.abc import Callable, Collection, Iterable, Iterator, Sequence
+from collections.abc import Set as AbstractSet
 from operator import itemgetter
 from typing import Protocol
 
@@ -37,32 +39,52 @@ from strips_framework.pddl.formulas import Atom
 
 Row = tuple[str, ...]
 
+#: A relation (or index) a fact base lacks is made from its parent's while at most this
+#: many fact bases in a row lack it, and the relation has at least :data:`SHARED` rows
+#: (atoms): fewer are matched (indexed) again at less cost than walking and updating.
+CHAIN = 8
+SHARED = 32
+
 
 class Relation:
     """Rows over ``columns`` (variables), with hash indexes on column subsets made on
     first use."""
 
-    __slots__ = ("columns", "rows", "_indexes")
+    __slots__ = ("columns", "rows", "_indexes", "_base", "_change", "__weakref__")
 
     def __init__(self, columns: tuple[str, ...], rows: list[Row]) -> None:
         self.columns = columns
         self.rows = rows
         self._indexes: dict[tuple[int, ...], dict[object, list[Row]]] = {}
+        #: The relation this one was made from by :meth:`changed` (while anything
+        #: else keeps it) and the rows it lost and gained since.
+        self._base: weakref.ref[Relation] | None = None
+        self._change: tuple[Sequence[Row], Sequence[Row]] = ((), ())
 
     def index(self, positions: tuple[int, ...]) -> dict[object, list[Row]]:
-        """The rows by their values at ``positions`` (a single value for one position)."""
+        """The rows by their values at ``positions`` (a single value for one position):
+        the index of the relation this one was made from, updated at the changed rows,
+        when that one is still alive (made there first, so that the relations made
+        from one share its building), else built from the rows (also when they are
+        fewer than :data:`SHARED`, or :data:`CHAIN` relations lack it)."""
         found = self._indexes.get(positions)
+        if found is not None:
+            return found
+        chain: list[Relation] = [self]  # the relations lacking it, nearest first
+        while len(chain) < CHAIN and len(chain[-1].rows) >= SHARED:
+            base = chain[-1]._base() if chain[-1]._base is not None else None
+            if base is None:
+                break
+            found = base._indexes.get(positions)
+            if found is not None:
+                break
+            chain.append(base)
         if found is None:
-            found = {}
-            key = _getter(positions)
-            for row in self.rows:
-                k = key(row)
-                bucket = found.get(k)
-                if bucket is None:
-                    found[k] = [row]
-                else:
-                    bucket.append(row)
-            self._indexes[positions] = found
+            found = _indexed(chain[-1].rows, positions)
+            chain.pop()._indexes[positions] = found
+        for relation in reversed(chain):
+            found = _index_changed(found, positions, *relation._change)
+            relation._indexes[positions] = found
         return found
 
     def renamed(self, columns: tuple[str, ...]) -> Relation:
@@ -70,6 +92,8 @@ class Relation:
         (an index built through either is built for both)."""
         view = Relation(columns, self.rows)
         view._indexes = self._indexes
+        view._base = self._base
+        view._change = self._change
         return view
 
     def changed(self, removed: Sequence[Row], added: Sequence[Row]) -> Relation:
@@ -83,21 +107,48 @@ class Relation:
         for row in added:
             insort(rows, row)
         child = Relation(self.columns, rows)
+        child._base = weakref.ref(self)
+        child._change = (removed, added)
         for positions, index in self._indexes.items():
-            copy = dict(index)
-            key = _getter(positions)
-            for row in removed:
-                k = key(row)
-                bucket = copy[k] = list(copy[k])
-                del bucket[bisect_left(bucket, row)]
-                if not bucket:
-                    del copy[k]
-            for row in added:
-                k = key(row)
-                bucket = copy[k] = list(copy.get(k, ()))
-                insort(bucket, row)
-            child._indexes[positions] = copy
+            child._indexes[positions] = _index_changed(index, positions, removed, added)
         return child
+
+
+def _indexed(rows: list[Row], positions: tuple[int, ...]) -> dict[object, list[Row]]:
+    """``rows`` by their values at ``positions``, each bucket in the rows' order."""
+    found: dict[object, list[Row]] = {}
+    key = _getter(positions)
+    for row in rows:
+        k = key(row)
+        bucket = found.get(k)
+        if bucket is None:
+            found[k] = [row]
+        else:
+            bucket.append(row)
+    return found
+
+
+def _index_changed(
+    index: dict[object, list[Row]],
+    positions: tuple[int, ...],
+    removed: Sequence[Row],
+    added: Sequence[Row],
+) -> dict[object, list[Row]]:
+    """A copy of ``index`` (on ``positions``) less the rows ``removed`` and with the rows
+    ``added``, its buckets kept in filing order; the untouched buckets are shared."""
+    copy = dict(index)
+    key = _getter(positions)
+    for row in removed:
+        k = key(row)
+        bucket = copy[k] = list(copy[k])
+        del bucket[bisect_left(bucket, row)]
+        if not bucket:
+            del copy[k]
+    for row in added:
+        k = key(row)
+        bucket = copy[k] = list(copy.get(k, ()))
+        insort(bucket, row)
+    return copy
 
 
 def _getter(positions: Sequence[int]):  # noqa: ANN202 - itemgetter or a lambda
@@ -113,7 +164,10 @@ class FactBase:
     use. A state's fact base sits on the task's static one, which answers for the static
     predicates (and keeps its relations for the whole search)."""
 
-    __slots__ = ("atoms", "_by_predicate", "_relations", "_pending", "static", "_static_predicates")
+    __slots__ = (
+        "atoms", "_by_predicate", "_relations", "_pending", "static", "_static_predicates",
+        "_parent", "_changes", "__weakref__",
+    )  # fmt: skip
 
     def __init__(
         self,
@@ -121,9 +175,9 @@ class FactBase:
         static: FactBase | None = None,
         static_predicates: frozenset[str] = frozenset(),
     ) -> None:
-        #: A set, or the state's own frozenset for a fact base made by
-        #: :meth:`changed` (copied into a set when :meth:`add` first adds to it).
-        self.atoms: set[GroundAtom] | frozenset[GroundAtom] = set(atoms)
+        #: A set, or the state itself for a fact base made by :meth:`changed`
+        #: (copied into a set when :meth:`add` first adds to it).
+        self.atoms: AbstractSet[GroundAtom] = set(atoms)
         # Filed by predicate and arity (a prover's task may use a name at two arities).
         by_predicate: dict[tuple[str, int], list[GroundAtom]] = {}
         for atom in sorted(self.atoms):  # so that no answer's order depends on hashing
@@ -140,6 +194,10 @@ class FactBase:
         self._pending: dict[object, tuple[Pattern, Relation, _Change]] = {}
         self.static = static
         self._static_predicates = static_predicates
+        #: The fact base this one was made from by :meth:`changed` (while anything
+        #: else keeps it), and the atoms of each predicate it lost and gained since.
+        self._parent: weakref.ref[FactBase] | None = None
+        self._changes: dict[tuple[str, int], _Change] = {}
 
     def holds(self, atom: GroundAtom) -> bool:
         if self.static is not None and atom[0] in self._static_predicates:
@@ -150,19 +208,23 @@ class FactBase:
         """Add (derived) atoms; the new ones, whose predicates' relations are rebuilt."""
         new = sorted({atom for atom in atoms if atom not in self.atoms})
         if new:
-            if isinstance(self.atoms, frozenset):
-                self.atoms = set(self.atoms)
-            self.atoms.update(new)
+            mine = self.atoms if isinstance(self.atoms, set) else set(self.atoms)
+            mine.update(new)
+            self.atoms = mine
             touched = set()
             for atom in new:
                 self._by_predicate.setdefault((atom[0], len(atom)), []).append(atom)
                 touched.add(atom[0])
             self._relations = {k: r for k, r in self._relations.items() if k[0] not in touched}
             self._pending = {k: p for k, p in self._pending.items() if k[0] not in touched}
+            self._parent = None  # (its relations lack these atoms)
         return new
 
     def changed(
-        self, state: frozenset[GroundAtom], removed: Collection[GroundAtom], added: Collection[GroundAtom]
+        self,
+        state: AbstractSet[GroundAtom],
+        removed: Collection[GroundAtom],
+        added: Collection[GroundAtom],
     ) -> FactBase:
         """The fact base of ``state``, which this one's state becomes by losing
         ``removed`` and gaining ``added`` (none of a static predicate); equal to one made
@@ -177,6 +239,7 @@ class FactBase:
         child.atoms = state
         child.static = self.static
         child._static_predicates = self._static_predicates
+        child._parent = weakref.ref(self)
         by_predicate = dict(self._by_predicate)
         touched: dict[tuple[str, int], _Change] = {}
         for atom in removed:
@@ -191,6 +254,7 @@ class FactBase:
                 insort(atoms, atom)
             by_predicate[key] = atoms
         child._by_predicate = by_predicate
+        child._changes = touched
         relations = {}
         pending = {}
         for key, (pattern, relation) in self._relations.items():
@@ -208,20 +272,59 @@ class FactBase:
         if self.static is not None and pattern.predicate in self._static_predicates:
             return self.static.relation(pattern)
         found = self._relations.get(pattern.key)
-        if found is None:
-            pending = self._pending.pop(pattern.key, None)
+        relation = self._made(pattern) if found is None else found[1]
+        return (
+            relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
+        )
+
+    def _made(self, pattern: Pattern) -> Relation:
+        """The relation of ``pattern``'s key (of a fluent predicate), which this fact
+        base lacks, made and kept. It is the parent's updated by this one's changes
+        when a parent is still alive: that parent makes its own the same way first, so
+        a relation is matched against a whole state once per chain of fact bases, not
+        once per state (a lazy search makes a state's first children before it asks
+        for all its relations, and their siblings then share what it makes)."""
+        if not pattern.columns:  # a ground atom: held or not, no scan
+            relation = Relation((), [()] if pattern.ground in self.atoms else [])
+            self._relations[pattern.key] = (pattern, relation)
+            return relation
+        chain: list[FactBase] = []  # the fact bases lacking it, nearest first
+        facts: FactBase | None = self
+        base: Relation | None = None
+        predicate = (pattern.predicate, pattern.size)
+        while facts is not None:
+            found = facts._relations.get(pattern.key)
+            if found is not None:
+                base = found[1]
+                break
+            pending = facts._pending.pop(pattern.key, None)
             if pending is not None:
-                _, parents, (out, into) = pending
-                removed = [row for row in map(pattern.row, out) if row is not None]
-                added = [row for row in map(pattern.row, into) if row is not None]
-                relation = parents.changed(removed, added) if removed or added else parents
-            elif pattern.columns:
-                relation = pattern.match(self._by_predicate.get((pattern.predicate, pattern.size), ()))
-            else:  # a ground atom: held or not, no scan
-                relation = Relation((), [()] if pattern.ground in self.atoms else [])
-            found = self._relations[pattern.key] = (pattern, relation)
-        relation = found[1]
-        return relation if relation.columns == pattern.columns else relation.renamed(pattern.columns)
+                base = _updated(pattern, pending[1], pending[2])
+                facts._relations[pattern.key] = (pattern, base)
+                break
+            chain.append(facts)
+            if len(chain) == CHAIN or len(facts._by_predicate.get(predicate, ())) < SHARED:
+                break
+            facts = facts._parent() if facts._parent is not None else None
+        if base is None:
+            first = chain.pop()
+            base = pattern.match(first._by_predicate.get((pattern.predicate, pattern.size), ()))
+            first._relations[pattern.key] = (pattern, base)
+        for facts in reversed(chain):
+            change = facts._changes.get((pattern.predicate, pattern.size))
+            if change is not None:
+                base = _updated(pattern, base, change)
+            facts._relations[pattern.key] = (pattern, base)
+        return base
+
+
+def _updated(pattern: Pattern, relation: Relation, change: _Change) -> Relation:
+    """``relation`` (of ``pattern``) after its predicate lost and gained the atoms of
+    ``change``."""
+    out, into = change
+    removed = [row for row in map(pattern.row, out) if row is not None]
+    added = [row for row in map(pattern.row, into) if row is not None]
+    return relation.changed(removed, added) if removed or added else relation
 
 
 #: The atoms of one predicate a state lost and gained.
@@ -237,7 +340,17 @@ class Pattern:
     for, e.g., logistics' ``(at ?truck ?loc)`` and ``(at ?truck ?from)``: one copy to
     update when a truck moves."""
 
-    __slots__ = ("predicate", "key", "columns", "taken", "checks", "repeats", "typed", "size", "ground")
+    __slots__ = (
+        "predicate",
+        "key",
+        "columns",
+        "taken",
+        "checks",
+        "repeats",
+        "typed",
+        "size",
+        "ground",
+    )
 
     def __init__(self, atom: Atom, domains: dict[str, frozenset[str]]) -> None:
         self.predicate = atom.predicate
@@ -300,7 +413,9 @@ class Pattern:
 class QueryEngine(Protocol):
     """Answers conjunctive queries over a fact base (the lifted search's prover)."""
 
-    def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+    def answers(
+        self, query: Query, facts: FactBase, seed: dict[str, str] | None = None
+    ) -> list[Row]:
         """Every binding of ``query.variables`` under which the query holds in
         ``facts`` (extending ``seed``, whose variables are already bound), each once,
         in an order that does not depend on hashing."""
@@ -375,7 +490,9 @@ class JoinEngine:
                 return None
         return relations
 
-    def answers(self, query: Query, facts: FactBase, seed: dict[str, str] | None = None) -> list[Row]:
+    def answers(
+        self, query: Query, facts: FactBase, seed: dict[str, str] | None = None
+    ) -> list[Row]:
         prepared = self._prepared(query, facts, seed)
         if prepared is None:
             return []
@@ -429,13 +546,17 @@ class JoinEngine:
                 found = self._ranges.get((variable, domain))
                 if found is None:
                     values = sorted(domain) if domain is not None else self.objects
-                    found = self._ranges[(variable, domain)] = Relation((variable,), [(v,) for v in values])
+                    found = self._ranges[(variable, domain)] = Relation(
+                        (variable,), [(v,) for v in values]
+                    )
                 relations.append(found)
                 bound.add(variable)
         plan = self._plans.get((query, seeded))
         if plan is None:
             edges = [frozenset(r.columns) for r in relations]
-            plan = self._plans[(query, seeded)] = _Plan(join_tree(edges) if self.yannakakis else None)
+            plan = self._plans[(query, seeded)] = _Plan(
+                join_tree(edges) if self.yannakakis else None
+            )
         return relations, plan
 
     def _acyclic(
@@ -452,7 +573,10 @@ class JoinEngine:
         root = tree[-1][1] if tree else 0
         order = [root] + [child for child, _ in reversed(tree)]
         return self._join_in_order(
-            [Relation(columns[i], rows[i]) if rows[i] is not relations[i].rows else relations[i] for i in order],
+            [
+                Relation(columns[i], rows[i]) if rows[i] is not relations[i].rows else relations[i]
+                for i in order
+            ],
             query,
             facts,
         )
@@ -568,7 +692,9 @@ def _extended(row: Row, pick: Callable, matches: list[Row]) -> Iterator[Row]:
         yield row + pick(match)
 
 
-def _reduce(relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+def _reduce(
+    relation: Relation, rows: list[Row], other: tuple[str, ...], other_rows: list[Row]
+) -> list[Row]:
     """The semi-join of ``rows`` (``relation``'s, perhaps already reduced) with
     ``other_rows``. When the relation is unreduced and many times larger, its index on
     the shared columns is probed with the few keys of the other side, so the cost follows
@@ -615,10 +741,14 @@ def _narrowed(relations: list[Relation], tree: list[tuple[int, int]]) -> list[Re
             rows[parent] = _reduce(ours, rows[parent], theirs.columns, rows[child])
             if not rows[parent]:
                 return None
-    return [r if rows[i] is r.rows else Relation(r.columns, rows[i]) for i, r in enumerate(relations)]
+    return [
+        r if rows[i] is r.rows else Relation(r.columns, rows[i]) for i, r in enumerate(relations)
+    ]
 
 
-def _semijoin(columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]) -> list[Row]:
+def _semijoin(
+    columns: tuple[str, ...], rows: list[Row], other: tuple[str, ...], other_rows: list[Row]
+) -> list[Row]:
     """The rows that agree with some row of ``other_rows`` on the shared columns."""
     shared = [c for c in columns if c in other]
     if not shared:
@@ -653,8 +783,8 @@ class _Filters:
                 atom: Atom = item  # type: ignore[assignment]
                 getters = [_term_getter(t, columns) for t in atom.args]
                 tests.append(
-                    lambda row, p=atom.predicate, g=getters, holds=self.facts.holds: not holds(
-                        (p, *[get(row) for get in g])
+                    lambda row, p=atom.predicate, g=getters, holds=self.facts.holds: (
+                        not holds((p, *[get(row) for get in g]))
                     )
                 )
         return tests
@@ -686,9 +816,7 @@ class _Filters:
                 holds = self.facts.holds
                 getters = [_term_getter(t, columns) for t in atom.args]
                 predicate = atom.predicate
-                rows = [
-                    row for row in rows if not holds((predicate, *[g(row) for g in getters]))
-                ]
+                rows = [row for row in rows if not holds((predicate, *[g(row) for g in getters]))]
         return rows
 
 

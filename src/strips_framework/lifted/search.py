@@ -41,10 +41,11 @@ from strips_framework.lifted.components import (
     LiftedEstimator,
     LiftedState,
 )
+from strips_framework.lifted.delta import successor
 from strips_framework.lifted.novelty import Novelty
 from strips_framework.lifted.query import FactBase
 from strips_framework.lifted.result import LiftedStatistics
-from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace
+from strips_framework.lifted.space import NO_PARENT, LiftedStateSpace, StateKey
 from strips_framework.lifted.successors import Successors, step_name
 from strips_framework.limits import Clock, LimitReached, Limits
 from strips_framework.options import Configurable, Option
@@ -118,17 +119,15 @@ class LiftedRun:
 
     def child(
         self, parent: int, step: ActionInstance
-    ) -> tuple[bytes, int, set[GroundAtom], set[GroundAtom]]:
-        """The packing of the state ``step`` leads to from state ``parent``, its path
-        cost, and the atoms it lost and gained (for :meth:`child_facts`). The packing is
-        the parent's with the few changed atoms' numbers taken out and put in, not the
-        whole state's numbers looked up again; the state itself is made only for a
+    ) -> tuple[StateKey, int, set[GroundAtom], set[GroundAtom]]:
+        """The duplicate-table key of the state ``step`` leads to from state
+        ``parent``, its path cost, and the atoms it lost and gained (for
+        :meth:`child_facts`). The key is made from the parent's and the changed atoms
+        only (:meth:`LiftedStateSpace.repack`); the state itself is made only for a
         child that is no duplicate (:meth:`child_facts`)."""
         state, facts = self.parent(parent)
         removed, added, cost = self.successors.change(state, facts, step)
-        packed = self.space.packed[parent]
-        if removed or added:
-            packed = self.space.repack(packed, removed, added)
+        packed = self.space.repack(parent, removed, added)
         return packed, self.space.g[parent] + cost, removed, added
 
     def child_facts(
@@ -137,15 +136,7 @@ class LiftedRun:
         """State ``number``, a child of ``parent`` by :meth:`child`, and its fact base,
         made from the parent's, and remembered."""
         state, facts = self.parent(parent)
-        # ``removed`` lies in the state and ``added`` outside it. A union and a
-        # difference copy the parent's hash table as it is (entries and stored hashes;
-        # the union first, as a table with deleted entries is not copied that way); a
-        # symmetric difference would insert every atom again, hashing each tuple anew,
-        # which costs some three times more on a state of a thousand atoms.
-        if added:
-            state = state.union(added)
-        if removed:
-            state = state.difference(removed)
+        state = successor(state, removed, added)  # (``removed`` in it, ``added`` not)
         facts = self.successors.facts_after(state, facts, removed, added)
         self.remember(number, state, facts)
         return state, facts
