@@ -120,15 +120,13 @@ class LiftedAlternatedBFWS(LiftedStrategy):
             goals_left, relevant_left = parent_counts
             # LiftedRun.child, without looking the parent up again for each child (a
             # childsnack state has some 50,000 applicable instances).
-            packed_parent, g_parent = space.packed[number], space.g[number]
+            g_parent = space.g[number]
             change, repack = successors.change, space.repack
             for step in successors.applicable(facts):
                 budget.check(run.expanded - 1)  # the time, within this expansion
                 run.generated += 1
                 removed, added, cost = change(state, facts, step)
-                packed = (
-                    repack(packed_parent, removed, added) if removed or added else packed_parent
-                )
+                packed = repack(number, removed, added)
                 g = g_parent + cost
                 if packed in space.ids:
                     continue
