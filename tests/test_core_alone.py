@@ -89,7 +89,7 @@ def test_a_pddl_task_with_the_core_alone_is_searched_lifted_and_says_why():
     domain = EXAMPLES / "pddl" / "blocksworld" / "domain.pddl"
     run = _core_alone(["solve", str(domain), str(domain.parent / "p4.pddl"), "--json"])
     assert run.returncode == 0, run.stderr
-    assert "strategy lifted-gbfs: the ground search's default heuristic (ff) is not registered" in run.stderr
+    assert "strategy lifted-alt-bfws: the ground search's default heuristic (ff) is not registered" in run.stderr
     payload = json.loads(run.stdout)
     assert payload["status"] == "solved"
     assert payload["family"] == "lifted"

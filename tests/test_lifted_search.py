@@ -443,7 +443,7 @@ def _blocks(count: int, goal: str) -> str:
     ("cheap", "chosen", "why"),
     [
         (10**6, "lazy-gbfs", "grounding looks cheap"),
-        (50, "lifted-gbfs", "grounding looks expensive"),
+        (50, "lifted-alt-bfws", "grounding looks expensive"),
     ],
 )
 def test_default_strategy_grounds_only_cheap_tasks_and_says_why(
@@ -469,8 +469,45 @@ def test_default_strategy_grounds_only_cheap_tasks_and_says_why(
     import json
 
     document = json.loads(captured.out)
-    assert document["family"] == ("lifted" if chosen == "lifted-gbfs" else "forward")
+    assert document["family"] == ("lifted" if chosen.startswith("lifted") else "forward")
     assert document["plan"] == ["(pick-up b1)", "(stack b1 b0)"]
+
+
+@pytest.mark.parametrize(("wide", "chosen"), [(10, "lifted-alt-bfws"), (9, "lifted-gbfs")])
+def test_a_wide_task_too_large_to_ground_is_searched_lazily(
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+    wide: int,
+    chosen: str,
+) -> None:
+    """Ten blocks on the table: ten pick-ups applicable at the start. With at most
+    ``wide`` allowed the task is narrow (alternated BFWS), with nine it is wide (lazy
+    greedy search, which draws children as it needs them)."""
+    from strips_framework.cli.main import main
+    from strips_framework.lifted import estimate
+
+    monkeypatch.setattr(estimate, "CHEAP_GROUNDING", 50)
+    monkeypatch.setattr(estimate, "WIDE_BRANCHING", wide)
+    problem = tmp_path / "problem.pddl"
+    problem.write_text(_blocks(10, "(and (on b1 b0))"))
+    domain = EXAMPLES / "blocksworld" / "domain.pddl"
+    assert main(["solve", str(domain), str(problem), "--json"]) == 0
+    err = capsys.readouterr().err
+    assert f"strips: strategy {chosen}: grounding looks expensive" in err
+    if chosen == "lifted-gbfs":
+        assert f"more than {wide} action instances applicable in the initial state" in err
+    else:
+        assert f"(10 action instances applicable in the initial state, at most {wide})" in err
+
+
+def test_the_initial_branching_is_counted_up_to_its_cap() -> None:
+    from strips_framework.lifted.estimate import initial_branching
+
+    domain = (EXAMPLES / "blocksworld" / "domain.pddl").read_text()
+    task = LiftedTask(parse_task(domain, _blocks(10, "(and (on b1 b0))")))
+    assert initial_branching(task, cap=100) == 10
+    assert initial_branching(task, cap=4) == 5
 
 
 def test_the_estimate_sends_a_thousand_blocks_to_the_lifted_search() -> None:

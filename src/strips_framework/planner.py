@@ -28,6 +28,7 @@ from strips_framework.user_files import is_dir, is_file
 
 if TYPE_CHECKING:
     from strips_framework.grounding.task import GroundTask
+    from strips_framework.lifted.task import LiftedTask
     from strips_framework.macrops.macrop import Library
     from strips_framework.observer import SearchObserver
     from strips_framework.pddl import PddlTask
@@ -38,8 +39,14 @@ if TYPE_CHECKING:
 
 GROUND_STRATEGY = "ground-strategy"
 LIFTED_STRATEGY = "lifted-strategy"
-#: The strategy PDDL input gets when the config names none and grounding looks expensive.
-PDDL_LIFTED_STRATEGY = "lifted-gbfs"
+#: The strategy PDDL input gets when the config names none and grounding looks expensive,
+#: unless the task is wide (:data:`~strips_framework.lifted.estimate.WIDE_BRANCHING`):
+#: Powerlifted's alternated BFWS computes the heuristic only on the states it expands, so
+#: the dead ends among a state's children cost it next to nothing.
+PDDL_LIFTED_STRATEGY = "lifted-alt-bfws"
+#: The strategy of a wide task whose grounding looks expensive: lazy greedy search, which
+#: draws a state's children as it needs them (and rates each one it takes).
+PDDL_WIDE_LIFTED_STRATEGY = "lifted-gbfs"
 #: The lifted heuristic a lifted strategy gets when the config names no ``[heuristic]``:
 #: the first of these that is registered (the evaluators plugin registers ``ff``; the
 #: core's own ``goal-count`` is there without any plugin).
@@ -61,7 +68,7 @@ class Planner(Record):
     #: default, and then the search runs unwrapped (see :mod:`strips_framework.observer`).
     observers: tuple[SearchObserver, ...]
 
-    __slots__ = ("registry", "config", "progress", "observers")
+    __slots__ = ("config", "observers", "progress", "registry")
 
     def __init__(
         self,
@@ -231,29 +238,33 @@ class Planner(Record):
         """The planner for ``pddl`` and, when the config names no strategy, the line
         saying which search was chosen and why: the ground search
         (:data:`~strips_framework.plugin.config.PDDL_DEFAULT_STRATEGY`) when grounding
-        looks cheap, else the lifted one (:data:`PDDL_LIFTED_STRATEGY`), decided from
-        :func:`~strips_framework.lifted.estimate.estimated_operators` before grounding
+        looks cheap, else a lifted one (:data:`PDDL_LIFTED_STRATEGY`, or
+        :data:`PDDL_WIDE_LIFTED_STRATEGY` for a wide task), decided from
+        :func:`~strips_framework.lifted.estimate.estimated_operators` and
+        :func:`~strips_framework.lifted.estimate.initial_branching` before grounding
         anything."""
         if "strategy" in self.config.chosen:
             return self.for_pddl(), None
         from strips_framework.lifted.estimate import CHEAP_GROUNDING, estimated_operators
         from strips_framework.lifted.task import LiftedTask
 
-        estimate = estimated_operators(LiftedTask(pddl))
+        task = LiftedTask(pddl)
+        estimate = estimated_operators(task)
         if not self._replace(config=self.config.for_pddl())._can_search_ground_tasks_by_default():
-            name = PDDL_LIFTED_STRATEGY
+            name, how = _lifted_strategy(task)
             why = (
                 f"the ground search's default heuristic ({', '.join(DEFAULTS['heuristic'])}) is "
-                "not registered (the core alone has only 'blind'): searching without grounding"
+                "not registered (the core alone has only 'blind'): searching without "
+                f"grounding, {how}"
             )
         elif estimate <= CHEAP_GROUNDING:
             name = PDDL_DEFAULT_STRATEGY
             why = f"grounding looks cheap (about {estimate:,.0f} operators estimated)"
         else:
-            name = PDDL_LIFTED_STRATEGY
+            name, how = _lifted_strategy(task)
             why = (
                 f"grounding looks expensive (about {estimate:,.0f} operators estimated, more "
-                f"than {CHEAP_GROUNDING:,}): searching without grounding"
+                f"than {CHEAP_GROUNDING:,}): searching without grounding, {how}"
             )
         choices = {**self.config.choices, "strategy": Choice("strategy", name)}
         config = self.config._replace(choices=choices)
@@ -404,6 +415,23 @@ class Planner(Record):
                 "native problem (first-order world models and axioms): use a world-model "
                 "strategy such as 'means-ends' or 'model-astar'"
             )
+
+
+def _lifted_strategy(task: LiftedTask) -> tuple[str, str]:
+    """The lifted search for ``task`` and the words saying why (see
+    :data:`PDDL_LIFTED_STRATEGY`)."""
+    from strips_framework.lifted.estimate import WIDE_BRANCHING, initial_branching
+
+    branching = initial_branching(task)
+    if branching > WIDE_BRANCHING:
+        return PDDL_WIDE_LIFTED_STRATEGY, (
+            f"lazily (more than {WIDE_BRANCHING:,} action instances applicable in the initial "
+            "state: a search that measures every child would pay for all of them)"
+        )
+    return PDDL_LIFTED_STRATEGY, (
+        f"rating only the states it expands ({branching:,} action instances applicable in "
+        f"the initial state, at most {WIDE_BRANCHING:,})"
+    )
 
 
 def _read_library(path: Path | None, problem: Problem) -> Library | None:

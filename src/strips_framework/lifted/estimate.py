@@ -7,17 +7,30 @@ parameters bound by static atoms of its precondition take the number of those at
 independence assumption), and every other parameter the objects of its type. Fluent
 atoms are not counted on: which of their atoms become reachable is what grounding would
 find out. The sum over the actions costs time linear in the size of the lifted task.
+
+Which lifted search suits a task is decided on a second cheap measure, the number of
+action instances applicable in the initial state (:func:`initial_branching`), counted by
+the query engine up to a cap.
 """
 
 from __future__ import annotations
 
 from collections import Counter
+from itertools import islice
 
+from strips_framework.lifted.successors import Successors
 from strips_framework.lifted.task import LiftedTask, Query, is_variable
 
 #: Estimated ground operators up to which grounding is considered cheap: the ground
 #: search's set-up stays within a few seconds (see benchmarks/bench_scaling.py).
 CHEAP_GROUNDING = 250_000
+#: Applicable instances in the initial state above which a task counts as *wide*: a
+#: search that measures every child of every state it expands (``lifted-alt-bfws``, some
+#: 10 µs a child in Python) then pays a tenth of a second or more per expansion, while a
+#: lazy search (``lifted-gbfs``) pays for the children it takes. Childsnack with contents
+#: (parsize 3) has about 100,000; logistics with 1,000 cities 1,526; organic synthesis
+#: 36-2,048.
+WIDE_BRANCHING = 10_000
 
 
 def estimated_operators(task: LiftedTask) -> float:
@@ -57,3 +70,10 @@ def _instances(
     for variable in wanted - bound:
         estimate *= domain(variable)
     return estimate
+
+
+def initial_branching(task: LiftedTask, cap: int = WIDE_BRANCHING) -> int:
+    """The number of action instances applicable in ``task``'s initial state, counted up
+    to ``cap + 1`` (a wide task is not listed whole to find out that it is wide)."""
+    successors = Successors(task)
+    return sum(1 for _ in islice(successors.stream(successors.facts(task.init)), cap + 1))
