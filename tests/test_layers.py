@@ -24,7 +24,7 @@ LAYER = {
     "forward": 5, "lifted": 5,
     "macrops": 6,
     "plugin": 7,
-    "planner": 8, "learning": 8,
+    "planner": 8, "learning": 8, "portfolio": 8,
     "cli": 9, "bench": 9, "testing": 9, "explore": 9,
     "__init__": 10,
 }  # fmt: skip

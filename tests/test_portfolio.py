@@ -1,0 +1,165 @@
+"""The portfolio of a task too large to ground (strips_framework.portfolio): means-ends
+analysis for a slice of the time limit, then the lifted search."""
+
+from __future__ import annotations
+
+import signal
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from strips_framework.errors import InputError
+from strips_framework.limits import Clock
+from strips_framework.pddl import parse_task
+from strips_framework.planner import Planner
+from strips_framework.portfolio import Portfolio, Stage
+from strips_framework.result import Status
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "pddl"
+
+
+def _blocks_task(count: int, goal: str) -> Any:
+    names = " ".join(f"b{i}" for i in range(count))
+    init = " ".join(f"(ontable b{i}) (clear b{i})" for i in range(count))
+    problem = f"""(define (problem blocks{count}) (:domain blocksworld) (:objects {names} - block)
+ (:init (handempty) {init}) (:goal {goal}))"""
+    return parse_task((EXAMPLES / "blocksworld" / "domain.pddl").read_text(), problem)
+
+
+class _Config:
+    def __init__(self, name: str) -> None:
+        self.choices = {"strategy": type("Choice", (), {"name": name})()}
+
+
+class _Scripted:
+    """A stand-in planner: ``solve_pddl`` runs ``act`` and records the clock it got."""
+
+    def __init__(self, name: str, act: Any) -> None:
+        self.config = _Config(name)
+        self.act = act
+        self.clocks: list[Clock] = []
+
+    def solve_pddl(self, pddl: Any, clock: Clock, parse_seconds: float = 0.0, library: Any = None) -> Any:
+        self.clocks.append(clock)
+        return self.act()
+
+
+class _Ended:
+    """A stand-in result: how a stage ended."""
+
+    def __init__(self, status: Status) -> None:
+        self.status = status
+
+    def _replace(self, **changes: Any) -> _Ended:
+        return self
+
+
+def test_a_stage_that_finds_no_plan_hands_the_task_to_the_next(capsys: pytest.CaptureFixture[str]) -> None:
+    """Means-ends allowed one node stops at the node limit; lazy greedy lifted search,
+    the last stage, then solves the task."""
+    task = _blocks_task(4, "(and (on b1 b0) (on b2 b1))")
+    means_ends = Planner.create({"strategy": "means-ends", "limits": {"nodes": 1}})
+    lifted = Planner.create({"strategy": "lifted-gbfs"})
+    result = Portfolio((Stage(means_ends, 0.5), Stage(lifted))).solve_pddl(task)
+    assert result.status == Status.SOLVED
+    assert result.statistics.family == "lifted"
+    assert "strips: means-ends stopped (node-limit after" in capsys.readouterr().err
+
+
+def test_the_first_plan_found_ends_the_portfolio() -> None:
+    task = _blocks_task(4, "(and (on b1 b0))")
+    means_ends = Planner.create({"strategy": "means-ends"})
+    last = _Scripted("never", lambda: pytest.fail("the last stage ran after a plan was found"))
+    result = Portfolio((Stage(means_ends, 0.5), Stage(last))).solve_pddl(task, Clock(60.0))  # type: ignore[arg-type]
+    assert result.status == Status.SOLVED
+    assert result.plan == ("(pick-up b1)", "(stack b1 b0)")
+    assert result.statistics.family == "world-model"
+
+
+def test_a_stage_gets_its_share_of_the_limit_and_the_last_what_is_left() -> None:
+    first = _Scripted("first", lambda: _Ended(Status.TIME_LIMIT))
+    last = _Scripted("last", lambda: _Ended(Status.TIME_LIMIT))
+    clock = Clock(40.0)
+    Portfolio((Stage(first, 0.25), Stage(last))).solve_pddl(None, clock)  # type: ignore[arg-type]
+    assert first.clocks[0].seconds == pytest.approx(10.0, abs=0.1)
+    assert last.clocks == [clock]
+
+
+def test_a_stage_that_cannot_search_the_task_is_skipped_saying_why(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    def refuse() -> Any:
+        raise InputError("t.pddl", 3, None, "a feature this search does not handle")
+
+    first = _Scripted("first", refuse)
+    last = _Scripted("last", lambda: "the last stage's result")
+    result = Portfolio((Stage(first, 0.5), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
+    assert result == "the last stage's result"
+    err = capsys.readouterr().err
+    assert "strips: first cannot search this task (" in err
+    assert "a feature this search does not handle" in err and "continuing with last" in err
+
+
+def test_a_slice_ends_on_time_inside_a_long_step_and_the_outer_alarm_comes_back() -> None:
+    """A stage busy in one step that never looks at its clock (a long proof attempt) is
+    stopped by the slice's alarm; the alarm that was set before (the CLI's, for the whole
+    run) keeps its handler and the rest of its time."""
+    steps: list[int] = []
+
+    def busy() -> Any:
+        for step in range(1000):  # 10 s unless the slice's alarm stops it
+            time.sleep(0.01)
+            steps.append(step)
+        return "finished the long step"
+
+    rings: list[int] = []
+    outer = signal.signal(signal.SIGALRM, lambda signum, frame: rings.append(signum))
+    signal.setitimer(signal.ITIMER_REAL, 100.0)
+    try:
+        first = _Scripted("busy", busy)
+        last = _Scripted("last", lambda: "the last stage's result")
+        result = Portfolio((Stage(first, 0.01), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
+        handler_after = signal.getsignal(signal.SIGALRM)
+        left, _ = signal.getitimer(signal.ITIMER_REAL)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, outer)
+    assert result == "the last stage's result"
+    assert len(steps) < 1000
+    assert handler_after is not None and handler_after not in (signal.SIG_DFL, signal.SIG_IGN)
+    assert handler_after.__name__ == "<lambda>"
+    assert 90.0 < left <= 100.0
+    assert rings == []
+
+
+def test_an_interrupted_stage_ends_the_portfolio() -> None:
+    first = _Scripted("first", lambda: _Ended(Status.INTERRUPTED))
+    last = _Scripted("last", lambda: pytest.fail("ran after Ctrl-C"))
+    result = Portfolio((Stage(first, 0.5), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
+    assert result.status == Status.INTERRUPTED
+
+
+def test_a_task_too_large_to_ground_gets_means_ends_first_and_says_so(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from strips_framework.cli.main import main
+    from strips_framework.lifted import estimate
+
+    monkeypatch.setattr(estimate, "CHEAP_GROUNDING", 10)
+    problem = tmp_path / "problem.pddl"
+    problem.write_text((EXAMPLES / "blocksworld" / "p4.pddl").read_text())
+    assert main(["solve", str(EXAMPLES / "blocksworld" / "domain.pddl"), str(problem), "--json"]) == 0
+    err = capsys.readouterr().err
+    assert "strips: strategy means-ends, then lifted-alt-bfws: grounding looks expensive" in err
+    assert "first means-ends for at most 10% of the time limit" in err
+
+
+def test_stage_shares_are_checked() -> None:
+    planner = Planner.create({"strategy": "means-ends"})
+    for share in (0.0, 1.5, -0.1):
+        with pytest.raises(ValueError, match="share of the time limit"):
+            Stage(planner, share)
+    with pytest.raises(ValueError, match="at least one stage"):
+        Portfolio(())
