@@ -63,6 +63,26 @@ def test_blocks_towers_are_built_from_the_bottom(write_task):
     assert agenda[-1] == problem.goal
 
 
+def test_the_agenda_adds_one_atom_at_a_time(write_task):
+    """A layer of several atoms is entered one atom at a time, in G0's order: the first
+    layer here is the base of the tower and the unordered pair, so the entries grow
+    1, 2, 3 (a layer at once would make 2, 3)."""
+    task = """
+    (define (problem two) (:domain BLOCKS) (:objects a b c d e - block)
+      (:init (CLEAR a) (ONTABLE a) (CLEAR b) (ONTABLE b) (CLEAR c) (ONTABLE c)
+             (CLEAR d) (ONTABLE d) (CLEAR e) (ONTABLE e) (HANDEMPTY))
+      (:goal (and (ON a b) (ON b c) (ON d e))))
+    """
+    problem = to_problem(write_task((DATA / "blocks-domain.pddl").read_text(), task))
+    assert _layers(problem) == [[("on", "b", "c"), ("on", "d", "e")], [("on", "a", "b")]]
+    agenda = goal_agenda(problem)
+    assert [[part.atom for part in conjuncts(entry)] for entry in agenda[:-1]] == [
+        [("on", "b", "c")],
+        [("on", "b", "c"), ("on", "d", "e")],
+    ]
+    assert agenda[-1] == problem.goal
+
+
 def test_a_crate_goes_on_its_base_after_the_base_is_placed(write_task):
     """Achieving on(c1, c3) needs clear(c1) (through ``lift``: ``unload`` cannot come
     first), which on(c2, c1) destroys; on(c3, p) needs clear(c3) against on(c1, c3)."""

@@ -19,8 +19,13 @@ lists and M0, with no grounding:
 - A comes before B when a necessary fact of A is inconsistent with B.
 
 The agenda is G0's atoms in layers (each layer the goals no unplaced goal must precede;
-on a cycle, all the rest), as the growing conjunctions the search achieves one after the
-other. Goals with no orders among them make a one-entry agenda: G0 itself.
+on a cycle, all the rest), and the search achieves them one atom at a time, layer after
+layer (within a layer in G0's order): its entries are the growing conjunctions, each one
+atom longer than the last. An entry that adds a whole layer at once left the search to
+work on all of the layer's atoms together, each from its own uncompleted proof: on depot
+04 of IPC 2002 (layer one: crates onto pallets that other stacks occupy), means-ends
+with the relaxed-plan evaluator took 5,240 nodes, about 1,300 one atom at a time (depot
+03: 1,321 and 1,091). Goals with no orders among them make a one-entry agenda: G0.
 """
 
 from __future__ import annotations
@@ -37,8 +42,9 @@ _DEPTH = 2
 
 
 def goal_agenda(problem: Problem) -> tuple[Formula, ...]:
-    """The conjunctions to achieve in turn, the last being G0 (``(G0,)`` when G0 is not
-    a conjunction of ground atoms or its atoms have no reasonable orders)."""
+    """The conjunctions to achieve in turn, each one atom longer than the one before,
+    the last being G0 (``(G0,)`` when G0 is not a conjunction of ground atoms or its
+    atoms have no reasonable orders)."""
     atoms = _ground_goal_atoms(problem.goal)
     if atoms is None or len(atoms) < 2:
         return (problem.goal,)
@@ -47,10 +53,10 @@ def goal_agenda(problem: Problem) -> tuple[Formula, ...]:
         return (problem.goal,)
     agenda: list[Formula] = []
     achieved: list[Atom] = []
-    for layer in layers[:-1]:
-        achieved.extend(layer)
-        agenda.append(And(tuple(Atomic(atom) for atom in achieved)))
-    return (*agenda, problem.goal)
+    for atom in (atom for layer in layers for atom in layer):
+        achieved.append(atom)
+        agenda.append(And(tuple(Atomic(a) for a in achieved)))
+    return (*agenda[:-1], problem.goal)
 
 
 def agenda_layers(
