@@ -95,7 +95,10 @@ class WorldModel(Record):
 
     Two models are equal when their deletions and additions are (the search compares
     models of one problem, which share M0); the hash, which duplicate detection asks for
-    at every node, is computed once.
+    at every node, is computed once. The additions are read in a fixed order (sorted
+    once, when first asked for): a frozenset of strings iterates in an order that
+    changes with each process's string hashing, and the searches that read a model's
+    facts must make the same nodes in every process.
     """
 
     initial: InitialModel
@@ -104,7 +107,7 @@ class WorldModel(Record):
 
     FIELDS = ("initial", "deletions", "additions")
     COMPARED = ("deletions", "additions")
-    __slots__ = (*FIELDS, "_hash")
+    __slots__ = (*FIELDS, "_hash", "_ordered")
 
     def __init__(
         self,
@@ -116,6 +119,7 @@ class WorldModel(Record):
         self.deletions = deletions
         self.additions = additions
         self._hash = hash(("WorldModel", deletions, additions))
+        self._ordered: tuple[Atom, ...] | None = None
 
     def __eq__(self, other: object) -> bool:
         return (
@@ -150,7 +154,14 @@ class WorldModel(Record):
     def added_clauses(self) -> tuple[Clause, ...]:
         """The additions as unit clauses, in a fixed order (a prover's search, and so its
         answers, must not depend on hash order)."""
-        return tuple(Clause(((True, atom),), label="added") for atom in sorted(self.additions, key=repr))
+        return tuple(Clause(((True, atom),), label="added") for atom in self.ordered_additions())
+
+    def ordered_additions(self) -> tuple[Atom, ...]:
+        """The additions in a fixed order (by ``repr``), the same in every process."""
+        ordered = self._ordered
+        if ordered is None:
+            ordered = self._ordered = tuple(sorted(self.additions, key=repr))
+        return ordered
 
     def hidden(self) -> set[int]:
         """The indices of M0's clauses this model does not see: its deletions and the
@@ -173,7 +184,7 @@ class WorldModel(Record):
         for atom, index in self.initial.facts.items():
             if index not in self.deletions:
                 yield atom
-        yield from self.additions
+        yield from self.ordered_additions()
 
     def facts_matching(self, pattern: Atom) -> Iterator[Atom]:
         """The facts present that may match ``pattern`` (see
@@ -185,7 +196,7 @@ class WorldModel(Record):
             if index[atom] not in deleted:
                 yield atom
         predicate, size = pattern[0], len(pattern)
-        for atom in self.additions:
+        for atom in self.ordered_additions():
             if atom[0] == predicate and len(atom) == size:
                 yield atom
 
