@@ -8,27 +8,53 @@ order: the unkeyed operators, then by key fact, then in bucket order. Search exp
 are therefore the same whichever implementation runs (``tests/search_forward`` compares
 them operator list by operator list and search by search).
 
-A state is a Python int; it is turned into bytes once per call and its set bits are
-walked byte by byte, so the work is one step per true fact plus one bit test per
-precondition of the operators filed under true facts.
+A state is a Python int, read in place: its 30-bit digits are walked, zero digits
+skipped, and a precondition is one digit's bit. Turning the int into bytes first (as
+this module did) cost a copy and a walk of every byte, a tenth of a millisecond per
+state at a million facts (blocks with 1,000 blocks) however few facts hold; now a state
+costs one step per 30 facts for the walk (a word compared with zero) plus one step per
+true fact and one bit test per precondition of the operators filed under true facts.
+The digits are CPython's layout (3.11 and 3.12 onwards, below); another build fails to
+compile and the pure-Python reference runs.
 """
 
 from array import array
+
+from libc.stdint cimport uint32_t
+
+
+cdef extern from *:
+    """
+    #if PyLong_SHIFT != 30
+    #error "strips_framework.forward._successors reads 30-bit int digits"
+    #endif
+    /* The digits of a non-negative int and their number. */
+    static inline const uint32_t* strips_digits(PyObject* x, Py_ssize_t* size) {
+    #if PY_VERSION_HEX >= 0x030C0000
+        *size = (Py_ssize_t) (((PyLongObject*) x)->long_value.lv_tag >> 3);
+        return (const uint32_t*) ((PyLongObject*) x)->long_value.ob_digit;
+    #else
+        *size = Py_SIZE(x);
+        return (const uint32_t*) ((PyLongObject*) x)->ob_digit;
+    #endif
+    }
+    """
+    const uint32_t* strips_digits(object x, Py_ssize_t* size)
 
 
 cdef class SuccessorGenerator:
     """The applicable operators of a state, from the reference generator's layout."""
 
-    cdef int num_bytes, num_unkeyed
+    cdef int num_facts, num_unkeyed
     # Per fact: its bucket's entries, bucket_start[fact]..bucket_start[fact + 1] (the
     # unkeyed entries come first, before bucket_start[0]). Per entry: the operator and
     # its positive and negative preconditions (compressed rows).
     cdef int[::1] bucket_start, entry_op, pre_start, pre, neg_start, neg
-    cdef readonly object keep, add, effects
+    cdef readonly object delete, add, effects
 
     def __cinit__(self, reference, task):
         operators = task.operators
-        self.num_bytes = (len(task.facts) + 7) // 8
+        self.num_facts = len(task.facts)
         entries = list(reference.unkeyed)
         self.num_unkeyed = len(entries)
         starts = [len(entries)]
@@ -45,39 +71,45 @@ cdef class SuccessorGenerator:
         self.bucket_start, self.entry_op = array("i", starts), array("i", entries or [0])
         self.pre_start, self.pre = array("i", pre_starts), array("i", pre or [0])
         self.neg_start, self.neg = array("i", neg_starts), array("i", neg or [0])
-        self.keep, self.add, self.effects = reference.keep, reference.add, reference.effects
+        self.delete, self.add, self.effects = reference.delete, reference.add, reference.effects
 
-    cdef inline bint _applies(self, int entry, const unsigned char* data):
-        cdef int i, fact
+    cdef inline bint _applies(self, int entry, const uint32_t* digits, Py_ssize_t size):
+        cdef int i
         for i in range(self.pre_start[entry], self.pre_start[entry + 1]):
-            fact = self.pre[i]
-            if not (data[fact >> 3] >> (fact & 7)) & 1:
+            if not _holds(digits, size, self.pre[i]):
                 return False
         for i in range(self.neg_start[entry], self.neg_start[entry + 1]):
-            fact = self.neg[i]
-            if (data[fact >> 3] >> (fact & 7)) & 1:
+            if _holds(digits, size, self.neg[i]):
                 return False
         return True
 
     def applicable(self, state):
         """The numbers of the operators applicable in ``state``, in the reference's order."""
-        cdef bytes packed = state.to_bytes(self.num_bytes, "little")
-        cdef const unsigned char* data = packed
+        if state < 0 or state.bit_length() > self.num_facts:
+            raise ValueError(f"not a state of {self.num_facts} facts")
+        cdef Py_ssize_t size, i
+        cdef const uint32_t* digits = strips_digits(state, &size)
         cdef list found = []
-        cdef int entry, i, bit, fact
-        cdef unsigned char byte
+        cdef int entry, bit, fact
+        cdef uint32_t digit
         for entry in range(self.num_unkeyed):
-            if self._applies(entry, data):
+            if self._applies(entry, digits, size):
                 found.append(self.entry_op[entry])
-        for i in range(self.num_bytes):
-            byte = data[i]
-            while byte:
+        for i in range(size):
+            digit = digits[i]
+            while digit:
                 bit = 0
-                while not (byte >> bit) & 1:
+                while not (digit >> bit) & 1:
                     bit += 1
-                byte &= byte - 1
-                fact = i * 8 + bit
+                digit &= digit - 1
+                fact = i * 30 + bit
                 for entry in range(self.bucket_start[fact], self.bucket_start[fact + 1]):
-                    if self._applies(entry, data):
+                    if self._applies(entry, digits, size):
                         found.append(self.entry_op[entry])
         return found
+
+
+cdef inline bint _holds(const uint32_t* digits, Py_ssize_t size, int fact):
+    """Whether bit ``fact`` of the int with these digits is set."""
+    cdef Py_ssize_t at = fact // 30
+    return at < size and (digits[at] >> (fact - at * 30)) & 1
