@@ -14,32 +14,14 @@ this module did) cost a copy and a walk of every byte, a tenth of a millisecond 
 state at a million facts (blocks with 1,000 blocks) however few facts hold; now a state
 costs one step per 30 facts for the walk (a word compared with zero) plus one step per
 true fact and one bit test per precondition of the operators filed under true facts.
-The digits are CPython's layout (3.11 and 3.12 onwards, below); another build fails to
-compile and the pure-Python reference runs.
+The digits are read as ``digits.h`` says.
 """
 
 from array import array
 
 from libc.stdint cimport uint32_t
 
-
-cdef extern from *:
-    """
-    #if PyLong_SHIFT != 30
-    #error "strips_framework.forward._successors reads 30-bit int digits"
-    #endif
-    /* The digits of a non-negative int and their number. */
-    static inline const uint32_t* strips_digits(PyObject* x, Py_ssize_t* size) {
-    #if PY_VERSION_HEX >= 0x030C0000
-        *size = (Py_ssize_t) (((PyLongObject*) x)->long_value.lv_tag >> 3);
-        return (const uint32_t*) ((PyLongObject*) x)->long_value.ob_digit;
-    #else
-        *size = Py_SIZE(x);
-        return (const uint32_t*) ((PyLongObject*) x)->ob_digit;
-    #endif
-    }
-    """
-    const uint32_t* strips_digits(object x, Py_ssize_t* size)
+from strips_framework.forward.digits cimport STRIPS_DIGIT_BITS, strips_digits
 
 
 cdef class SuccessorGenerator:
@@ -102,7 +84,7 @@ cdef class SuccessorGenerator:
                 while not (digit >> bit) & 1:
                     bit += 1
                 digit &= digit - 1
-                fact = i * 30 + bit
+                fact = i * STRIPS_DIGIT_BITS + bit
                 for entry in range(self.bucket_start[fact], self.bucket_start[fact + 1]):
                     if self._applies(entry, digits, size):
                         found.append(self.entry_op[entry])
@@ -111,5 +93,5 @@ cdef class SuccessorGenerator:
 
 cdef inline bint _holds(const uint32_t* digits, Py_ssize_t size, int fact):
     """Whether bit ``fact`` of the int with these digits is set."""
-    cdef Py_ssize_t at = fact // 30
-    return at < size and (digits[at] >> (fact - at * 30)) & 1
+    cdef Py_ssize_t at = fact // STRIPS_DIGIT_BITS
+    return at < size and (digits[at] >> (fact - at * STRIPS_DIGIT_BITS)) & 1

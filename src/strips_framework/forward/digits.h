@@ -1,0 +1,37 @@
+/* A non-negative Python int's digits read in place, for the compiled modules that take
+   ground states (int bitsets): CPython stores an int as 30-bit digits, lowest first,
+   and their number; the layout moved in 3.12. Another digit size fails to compile, and
+   the pure-Python references run instead. */
+#ifndef STRIPS_DIGITS_H
+#define STRIPS_DIGITS_H
+#include <Python.h>
+#include <stdint.h>
+
+#if PyLong_SHIFT != 30
+#error "strips_framework.forward reads 30-bit int digits"
+#endif
+
+#define STRIPS_DIGIT_BITS 30
+
+/* The digits of the non-negative int x; their number in *size. */
+static inline uint32_t* strips_digits(PyObject* x, Py_ssize_t* size) {
+#if PY_VERSION_HEX >= 0x030C0000
+    *size = (Py_ssize_t) (((PyLongObject*) x)->long_value.lv_tag >> 3);
+    return (uint32_t*) ((PyLongObject*) x)->long_value.ob_digit;
+#else
+    *size = Py_SIZE(x);
+    return (uint32_t*) ((PyLongObject*) x)->ob_digit;
+#endif
+}
+
+/* A new int of `size` digits, all zero (the caller sets them; the top one must end
+   up non-zero). */
+static inline PyObject* strips_new_int(Py_ssize_t size) {
+    Py_ssize_t ignored;
+    PyObject* x = (PyObject*) _PyLong_New(size);
+    if (x != NULL) {
+        memset(strips_digits(x, &ignored), 0, size * sizeof(uint32_t));
+    }
+    return x;
+}
+#endif
