@@ -18,10 +18,12 @@ cdef extern from *:
 
 def pack(state):
     """The numbers of the facts true in ``state``, ascending, as 4-byte integers."""
-    if state < 0:
-        raise ValueError("a state is a non-negative int")
+    if not isinstance(state, int):
+        raise TypeError("a state is an int")
     cdef Py_ssize_t size, i, count = 0
     cdef uint32_t* digits = strips_digits(state, &size)
+    if size < 0:
+        raise ValueError("a state is a non-negative int")
     for i in range(size):
         if digits[i]:
             count += __builtin_popcount(digits[i])

@@ -27,7 +27,7 @@ from strips_framework.forward.digits cimport STRIPS_DIGIT_BITS, strips_digits
 cdef class SuccessorGenerator:
     """The applicable operators of a state, from the reference generator's layout."""
 
-    cdef int num_facts, num_unkeyed
+    cdef int num_facts, num_digits, num_unkeyed
     # Per fact: its bucket's entries, bucket_start[fact]..bucket_start[fact + 1] (the
     # unkeyed entries come first, before bucket_start[0]). Per entry: the operator and
     # its positive and negative preconditions (compressed rows).
@@ -37,11 +37,13 @@ cdef class SuccessorGenerator:
     def __cinit__(self, reference, task):
         operators = task.operators
         self.num_facts = len(task.facts)
+        # A state's bits beyond the facts (up to its top digit's end) file no operator.
+        self.num_digits = (self.num_facts + STRIPS_DIGIT_BITS - 1) // STRIPS_DIGIT_BITS
         entries = list(reference.unkeyed)
         self.num_unkeyed = len(entries)
         starts = [len(entries)]
         buckets = reference.buckets
-        for fact in range(len(task.facts)):
+        for fact in range(self.num_digits * STRIPS_DIGIT_BITS):
             entries.extend(buckets.get(fact, ()))
             starts.append(len(entries))
         pre_starts, pre, neg_starts, neg = [0], [], [0], []
@@ -67,10 +69,12 @@ cdef class SuccessorGenerator:
 
     def applicable(self, state):
         """The numbers of the operators applicable in ``state``, in the reference's order."""
-        if state < 0 or state.bit_length() > self.num_facts:
-            raise ValueError(f"not a state of {self.num_facts} facts")
+        if not isinstance(state, int):
+            raise TypeError("a state is an int")
         cdef Py_ssize_t size, i
         cdef const uint32_t* digits = strips_digits(state, &size)
+        if size < 0 or size > self.num_digits:
+            raise ValueError(f"not a state of {self.num_facts} facts")
         cdef list found = []
         cdef int entry, bit, fact
         cdef uint32_t digit

@@ -13,13 +13,15 @@
 
 #define STRIPS_DIGIT_BITS 30
 
-/* The digits of the non-negative int x; their number in *size. */
+/* The digits of the int x and, in *size, their number: -1 when x is negative (no
+   state). */
 static inline uint32_t* strips_digits(PyObject* x, Py_ssize_t* size) {
 #if PY_VERSION_HEX >= 0x030C0000
-    *size = (Py_ssize_t) (((PyLongObject*) x)->long_value.lv_tag >> 3);
+    uintptr_t tag = ((PyLongObject*) x)->long_value.lv_tag;
+    *size = (tag & 3) == 2 ? -1 : (Py_ssize_t) (tag >> 3);
     return (uint32_t*) ((PyLongObject*) x)->long_value.ob_digit;
 #else
-    *size = Py_SIZE(x);
+    *size = Py_SIZE(x) < 0 ? -1 : Py_SIZE(x);
     return (uint32_t*) ((PyLongObject*) x)->ob_digit;
 #endif
 }

@@ -150,16 +150,15 @@ class StateSpace:
 
     def bytes_per_state(self) -> float:
         """What a stored state costs on average: its key (the state or its packing), its
-        entries in the duplicate table and the list of states, its parent and operator;
-        the states kept unpacked are counted too."""
+        entries in the duplicate table and the list of states, its parent and operator.
+        Not counted: the :data:`RECENT` states a packed space keeps unpacked, a fixed
+        cost (as the lifted space's rebuilt states are not counted either)."""
         if not self._stored:
             return 0.0
         count = len(self._stored)
         total = sum(map(sys.getsizeof, self._stored))
         total += sys.getsizeof(self._keys) + sys.getsizeof(self._stored)
         total += (self.parents.itemsize + self.operators.itemsize) * count
-        if self.packed:
-            total += sum(map(sys.getsizeof, self._recent.values())) + sys.getsizeof(self._recent)
         return total / count
 
     def plan_to(self, number: int) -> list[int]:
