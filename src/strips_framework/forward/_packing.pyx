@@ -8,12 +8,13 @@ reference goes through a binary string and a byte string as long as the state.""
 from cpython.bytes cimport PyBytes_AS_STRING, PyBytes_FromStringAndSize
 from libc.stdint cimport uint32_t
 
-from strips_framework.forward.digits cimport STRIPS_DIGIT_BITS, strips_digits, strips_new_int
-
-
-cdef extern from *:
-    int __builtin_popcount(unsigned int x)
-    int __builtin_ctz(unsigned int x)
+from strips_framework.forward.digits cimport (
+    STRIPS_DIGIT_BITS,
+    __builtin_ctz,
+    __builtin_popcount,
+    strips_digits,
+    strips_new_int,
+)
 
 
 def pack(state):

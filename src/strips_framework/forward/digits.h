@@ -26,6 +26,16 @@ static inline uint32_t* strips_digits(PyObject* x, Py_ssize_t* size) {
 #endif
 }
 
+/* Make x, made by strips_new_int, `size` digits long (its top digit non-zero, or
+   size 0: the int 0). */
+static inline void strips_set_size(PyObject* x, Py_ssize_t size) {
+#if PY_VERSION_HEX >= 0x030C0000
+    ((PyLongObject*) x)->long_value.lv_tag = ((uintptr_t) size << 3) | (size == 0 ? 1 : 0);
+#else
+    Py_SET_SIZE(x, size);
+#endif
+}
+
 /* A new int of `size` digits, all zero (the caller sets them; the top one must end
    up non-zero). */
 static inline PyObject* strips_new_int(Py_ssize_t size) {

@@ -107,20 +107,17 @@ class StateSpace:
             recent.popitem(last=False)
 
     def successor(self, state: int, operator: int) -> int:
-        """The state that applying ``operator`` in ``state`` makes, derived facts included.
-
-        Deletes are taken out as ``state ^ (state & delete)``, not ``state & ~delete``:
-        Python ints are positive here, and an operand's complement (a negative int)
-        costs a conversion as long as the state, several times the other operations
-        (0.17 ms at a million facts against 0.006 ms)."""
+        """The state that applying ``operator`` in ``state`` makes, derived facts included."""
         successors = self.successors
-        delete, add = successors.delete[operator], successors.add[operator]
-        if successors.effects is not None:
+        if successors.effects is None:
+            result = successors.apply(state, operator)
+        else:  # the effects that fire join the unconditional ones (deletes, then adds)
+            delete, add = successors.delete[operator], successors.add[operator]
             for condition, condition_neg, effect_delete, effect_add in successors.effects[operator]:
                 if state & condition == condition and not state & condition_neg:
                     delete |= effect_delete
                     add |= effect_add
-        result = (state ^ (state & delete)) | add
+            result = (state ^ (state & delete)) | add
         return self.derive(result) if self.derive is not None else result
 
     def add(self, state: int, parent: int, operator: int) -> int:
