@@ -11,7 +11,7 @@ setup(
                 [f"src/strips_framework/forward/{name}.pyx"],
                 optional=True,  # no compiler: the pure-Python reference runs
             )
-            for name in ("_successors", "_search")
+            for name in ("_successors", "_search", "_packing")
         ],
         language_level=3,
     )

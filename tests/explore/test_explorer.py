@@ -104,7 +104,7 @@ def test_forward_document_samples_states_and_keeps_the_best_h_curve():
     init = {task.facts[i] for i in range(len(task.facts)) if task.init >> i & 1}
     assert {strings[i] for i in document["init"]} == init
     for node in document["nodes"]:
-        state = record.run.space.states[node["id"]]
+        state = record.run.space.state(node["id"])
         facts = {task.facts[i] for i in range(len(task.facts)) if state >> i & 1}
         assert facts == (init - {strings[i] for i in node["del"]}) | {strings[i] for i in node["add"]}
     best = [h for _, _, h in document["curve"]]

@@ -46,11 +46,11 @@ def test_plan_is_read_back_from_parent_pointers(tasks):
     space = StateSpace(task)
     root = space.add(task.init, NO_PARENT, NO_PARENT)
     first = space.add(space.successor(task.init, 3), root, 3)
-    second = space.add(space.successor(space.states[first], 5), first, 5)
+    second = space.add(space.successor(space.state(first), 5), first, 5)
     assert space.plan_to(second) == [3, 5] and space.plan_to(root) == []
     space.reparent(second, root, 7)
     assert space.plan_to(second) == [7]
-    assert space.ids[task.init] == root
+    assert space.number(task.init) == root
 
 
 def test_axioms_are_evaluated_for_every_successor(tasks):

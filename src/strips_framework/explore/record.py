@@ -134,7 +134,7 @@ class SearchRecord(Watcher):
 
     def _forward(self, strings: Strings) -> dict[str, Any]:
         space, task = self.run.space, self.task
-        total = len(space.states)
+        total = len(space)
         path = path_numbers(space, task, self.result.plan or ())
         shown = dict.fromkeys([*path, *(n for n in self.kept if n < total)])
         for number in list(shown):  # the ancestors that connect the sample to the root
@@ -151,7 +151,7 @@ class SearchRecord(Watcher):
         g = _path_costs(space, shown)
         nodes = []
         for number in sorted(shown):
-            state, parent = space.states[number], space.parents[number]
+            state, parent = space.state(number), space.parents[number]
             nodes.append({
                 "id": number,
                 "parent": parent if parent in shown else None,

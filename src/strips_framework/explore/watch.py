@@ -84,7 +84,7 @@ class Watcher:
 
     def _estimated(self, state: int, h: float, preferred: Sequence[int]) -> None:
         self.evaluations += 1
-        number = self.run.space.ids.get(state) if self.run is not None else None
+        number = self.run.space.number(state) if self.run is not None else None
         if number is None:
             self._waiting[state] = (h, preferred)
         else:
@@ -149,16 +149,16 @@ class WatchedEstimator:
 
 def path_numbers(space: Any, task: Any, plan: Sequence[str]) -> list[int]:
     """The numbers of the states along ``plan`` from the initial state."""
-    if not space.states:
+    if not len(space):
         return []
     by_name = {op.name: index for index, op in enumerate(task.operators)}
-    state, numbers = task.init, [space.ids.get(task.init, 0)]
+    state, numbers = task.init, [space.number(task.init) or 0]
     for step in plan:
         index = by_name.get(step)
         if index is None:
             break
         state = space.successor(state, index)
-        number = space.ids.get(state)
+        number = space.number(state)
         if number is None:
             break
         numbers.append(number)

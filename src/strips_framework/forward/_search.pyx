@@ -127,7 +127,7 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
     cdef Py_ssize_t i, count
     task, space, budget = run.task, run.space, run.budget
     applicable, successor = space.successors.applicable, space.successor
-    ids, states, add, goal = space.ids, space.states, space.add, task.goal_mask
+    find, state_of, add, goal = space.number, space.state, space.add, task.goal_mask
     width = max(len(task.operators), 1)
     best_h = math.inf
     parent, op, state = -1, -1, task.init
@@ -169,8 +169,8 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
             entry = frontier.pop()
             parent = entry // width
             op = entry - parent * width
-            state = successor(states[parent], op)
-            if state not in ids:
+            state = successor(state_of(parent), op)
+            if find(state) is None:
                 break
 
 
@@ -184,7 +184,7 @@ def eager(run, estimate, preferred_of, key, bint reopen, long long boost):
     cdef bytearray closed = bytearray(1)
     task, space, budget = run.task, run.space, run.budget
     applicable, successor = space.successors.applicable, space.successor
-    ids, states, costs, goal = space.ids, space.states, space.costs, task.goal_mask
+    find, state_of, costs, goal = space.number, space.state, space.costs, task.goal_mask
     add, reparent = space.add, space.reparent
     h0 = estimate(task.init)
     run.evaluated += 1
@@ -203,7 +203,7 @@ def eager(run, estimate, preferred_of, key, bint reopen, long long boost):
         closed[number] = 1
         budget.check(run.expanded)
         run.expanded += 1  # counted before the goal test, as Fast Downward counts
-        state = states[number]
+        state = state_of(number)
         if state & goal == goal:
             return number
         preferred = frozenset(preferred_of(state)[1]) if preferred_of else no_preferred
@@ -212,7 +212,7 @@ def eager(run, estimate, preferred_of, key, bint reopen, long long boost):
             child = successor(state, op)
             run.generated += 1
             child_g = base + costs[op]
-            found = ids.get(child)
+            found = find(child)
             if found is None:
                 child_h = estimate(child)
                 run.evaluated += 1

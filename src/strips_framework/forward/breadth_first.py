@@ -22,11 +22,11 @@ class BreadthFirstSearch(ForwardStrategy):
 
     def run(self, run: SearchRun) -> int | None:
         task, space, budget = run.task, run.space, run.budget
-        applicable, successor, ids, states = (
+        applicable, successor, find, state_of = (
             space.successors.applicable,
             space.successor,
-            space.ids,
-            space.states,
+            space.number,
+            space.state,
         )
         goal = task.goal_mask
         root = space.add(task.init, NO_PARENT, NO_PARENT)
@@ -35,13 +35,13 @@ class BreadthFirstSearch(ForwardStrategy):
         waiting = deque([root])
         while waiting:
             number = waiting.popleft()
-            state = states[number]
+            state = state_of(number)
             budget.check(run.expanded)
             run.expanded += 1
             for op in applicable(state):
                 child = successor(state, op)
                 run.generated += 1
-                if child in ids:
+                if find(child) is not None:
                     continue
                 child_number = space.add(child, number, op)
                 if child & goal == goal:

@@ -51,7 +51,7 @@ class EagerSearch(ForwardStrategy):
         estimate = run.estimator.estimate
         preferred_of = with_preferred(run.estimator) if self.preferred else None
         applicable, successor = space.successors.applicable, space.successor
-        ids, states, costs, goal = space.ids, space.states, space.costs, task.goal_mask
+        find, state_of, costs, goal = space.number, space.state, space.costs, task.goal_mask
         key, reopen = self.key, self.reopen
         frontier = open_list(self.preferred, self.boost)
         h0 = estimate(task.init)
@@ -70,7 +70,7 @@ class EagerSearch(ForwardStrategy):
             closed[number] = 1
             budget.check(run.expanded)
             run.expanded += 1  # counted before the goal test, as Fast Downward counts
-            state = states[number]
+            state = state_of(number)
             if state & goal == goal:
                 return number
             preferred = frozenset(preferred_of(state)[1]) if preferred_of else frozenset()
@@ -79,7 +79,7 @@ class EagerSearch(ForwardStrategy):
                 child = successor(state, op)
                 run.generated += 1
                 child_g = base + costs[op]
-                known = ids.get(child)
+                known = find(child)
                 if known is None:
                     child_h = estimate(child)
                     run.evaluated += 1

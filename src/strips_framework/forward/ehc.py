@@ -37,7 +37,7 @@ class EnforcedHillClimbing(ForwardStrategy):
         task, space, budget = run.task, run.space, run.budget
         evaluate = with_preferred(run.estimator)
         applicable, successor = space.successors.applicable, space.successor
-        ids, states, goal = space.ids, space.states, task.goal_mask
+        find, state_of, goal = space.number, space.state, task.goal_mask
         current = space.add(task.init, NO_PARENT, NO_PARENT)
         current_h, current_preferred = evaluate(task.init)
         run.evaluated += 1
@@ -45,21 +45,21 @@ class EnforcedHillClimbing(ForwardStrategy):
             run.dead_ends += 1
             return None
         while True:
-            if states[current] & goal == goal:
+            if state_of(current) & goal == goal:
                 return current
             # One phase: breadth-first from the current state to a strictly better one.
             waiting: deque[tuple[int, Sequence[int]]] = deque([(current, current_preferred)])
             better = None
             while waiting and better is None:
                 number, preferred = waiting.popleft()
-                state = states[number]
+                state = state_of(number)
                 budget.check(run.expanded)
                 run.expanded += 1
                 helpful = self.preferred and preferred
                 for op in sorted(set(preferred)) if helpful else applicable(state):
                     child = successor(state, op)
                     run.generated += 1
-                    if child in ids:
+                    if find(child) is not None:
                         continue
                     child_number = space.add(child, number, op)
                     h, child_preferred = evaluate(child)

@@ -61,7 +61,7 @@ class LazyGreedySearch(ForwardStrategy):
         task, space, budget = run.task, run.space, run.budget
         evaluate = self._evaluator(run)
         applicable, successor = space.successors.applicable, space.successor
-        ids, states, add, goal = space.ids, space.states, space.add, task.goal_mask
+        find, state_of, add, goal = space.number, space.state, space.add, task.goal_mask
         # An open entry is a (parent, operator) pair packed into one int.
         width = max(len(task.operators), 1)
         frontier = open_list(self.preferred, self.boost)
@@ -94,6 +94,6 @@ class LazyGreedySearch(ForwardStrategy):
                 if not frontier:
                     return None
                 parent, op = divmod(frontier.pop(), width)
-                state = successor(states[parent], op)
-                if state not in ids:
+                state = successor(state_of(parent), op)
+                if find(state) is None:
                     break

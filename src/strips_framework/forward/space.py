@@ -1,29 +1,58 @@
 """The states a search has reached, numbered in the order they were reached.
 
-Duplicate detection is a dict from state (an int bitset) to its number; the search tree
-is kept as two compact arrays, the parent's number and the operator that led from it,
-from which the plan is read back at the end. Derived facts are evaluated for every new
-state when the task has axioms, and conditional effects tested when it has any;
-otherwise successor states are a mask operation.
+Duplicate detection is a dict from a state's key to its number; the search tree is kept
+as two compact arrays, the parent's number and the operator that led from it, from which
+the plan is read back at the end. Derived facts are evaluated for every new state when
+the task has axioms, and conditional effects tested when it has any; otherwise successor
+states are a mask operation.
+
+A state's key is the state itself (an int bitset) unless the task's states are sparse:
+when the bitset of the initial state is at least :data:`SPARSE` times longer than its
+packing (the sorted numbers of its true facts, 4 bytes each: :mod:`.packing`), states
+are stored packed and keyed by their packing, and the last :data:`RECENT` states a
+search stored or asked for are kept unpacked. A bitset's size, hash and comparison cost
+as much as the task has facts; a packing's, as much as the state has true facts (blocks
+with 900 blocks: 108 KB a state as bitsets, 4 KB packed). Either way the searches see
+the same states in the same order: only their storage differs.
 """
 
 from __future__ import annotations
 
+import sys
 from array import array
+from collections import OrderedDict
 from collections.abc import Callable
 
+from strips_framework.forward.packing import packing
 from strips_framework.forward.successors import successor_generator
 from strips_framework.grounding.task import GroundTask
 
 NO_PARENT = -1
+#: States are stored packed when the initial state's bitset (one bit per fact) is at
+#: least this many times the size of its packing (32 bits per true fact): when fewer
+#: than one fact in ``32 * SPARSE`` holds.
+SPARSE = 4
+#: How many states stay unpacked in a packed space (a lazy search's children mostly
+#: come from recently expanded states).
+RECENT = 8
+
+
+def stores_packed(task: GroundTask) -> bool:
+    """Whether :class:`StateSpace` stores ``task``'s states packed (module docstring)."""
+    return len(task.facts) >= 32 * SPARSE * max(task.init.bit_count(), 1)
 
 
 class StateSpace:
-    def __init__(self, task: GroundTask) -> None:
+    """The states reached, by number: :meth:`state` gives a state, :meth:`number` the
+    number of a state reached before (or None), :meth:`add` numbers a new one."""
+
+    def __init__(self, task: GroundTask, packed: bool | None = None) -> None:
         self.task = task
         self.successors = successor_generator(task)
-        self.ids: dict[int, int] = {}
-        self.states: list[int] = []
+        #: Whether states are stored packed (by default as :func:`stores_packed` says).
+        self.packed = stores_packed(task) if packed is None else packed
+        self._keys: dict[int | bytes, int] = {}
+        self._stored: list[int | bytes] = []
         self.parents = array("l")
         self.operators = array("l")
         self.costs = tuple(op.cost if task.uses_costs else 1 for op in task.operators)
@@ -32,26 +61,73 @@ class StateSpace:
             from strips_framework.grounding.axioms import AxiomEvaluator
 
             self.derive = AxiomEvaluator(task).evaluate
+        self.state: Callable[[int], int]
+        self.number: Callable[[int], int | None]
+        if self.packed:
+            self._pack, self._unpack = packing()
+            self._recent: OrderedDict[int, int] = OrderedDict()
+            #: The state last packed and its packing (a search asks for a state's
+            #: number and then adds it: one packing for both).
+            self._last: tuple[int, bytes] = (0, self._pack(0))
+            self.state, self.number = self._packed_state, self._packed_number
+        else:
+            # A state is its own key: the list's and the dict's own methods, no call
+            # in between on the searches' hottest path.
+            self.state, self.number = self._stored.__getitem__, self._keys.get
+
+    def __len__(self) -> int:
+        return len(self._stored)
+
+    def _key(self, state: int) -> int | bytes:
+        if not self.packed:
+            return state
+        last, packed = self._last
+        if last is not state:
+            packed = self._pack(state)
+            self._last = (state, packed)
+        return packed
+
+    def _packed_number(self, state: int) -> int | None:
+        return self._keys.get(self._key(state))
+
+    def _packed_state(self, number: int) -> int:
+        recent = self._recent
+        state = recent.get(number)
+        if state is None:
+            state = self._unpack(self._stored[number])  # type: ignore[arg-type]
+            self._remember(number, state)
+        else:
+            recent.move_to_end(number)
+        return state
+
+    def _remember(self, number: int, state: int) -> None:
+        recent = self._recent
+        recent[number] = state
+        if len(recent) > RECENT:
+            recent.popitem(last=False)
 
     def successor(self, state: int, operator: int) -> int:
         """The state that applying ``operator`` in ``state`` makes, derived facts included."""
         successors = self.successors
         if successors.effects is None:
-            result = (state & successors.keep[operator]) | successors.add[operator]
-        else:
-            keep, add = successors.keep[operator], successors.add[operator]
-            for condition, condition_neg, delete, effect_add in successors.effects[operator]:
+            result = successors.apply(state, operator)
+        else:  # the effects that fire join the unconditional ones (deletes, then adds)
+            delete, add = successors.delete[operator], successors.add[operator]
+            for condition, condition_neg, effect_delete, effect_add in successors.effects[operator]:
                 if state & condition == condition and not state & condition_neg:
-                    keep &= ~delete
+                    delete |= effect_delete
                     add |= effect_add
-            result = (state & keep) | add
+            result = (state ^ (state & delete)) | add
         return self.derive(result) if self.derive is not None else result
 
     def add(self, state: int, parent: int, operator: int) -> int:
         """Number a new state reached from state number ``parent`` by ``operator``."""
-        number = len(self.states)
-        self.ids[state] = number
-        self.states.append(state)
+        number = len(self._stored)
+        key = self._key(state)
+        self._keys[key] = number
+        self._stored.append(key)
+        if self.packed:
+            self._remember(number, state)
         self.parents.append(parent)
         self.operators.append(operator)
         return number
@@ -63,9 +139,24 @@ class StateSpace:
 
     def clear(self) -> None:
         """Forget every state (a search out of memory frees it before reporting)."""
-        self.ids.clear()
-        self.states.clear()
+        self._keys.clear()
+        self._stored.clear()
+        if self.packed:
+            self._recent.clear()
         del self.parents[:], self.operators[:]
+
+    def bytes_per_state(self) -> float:
+        """What a stored state costs on average: its key (the state or its packing), its
+        entries in the duplicate table and the list of states, its parent and operator.
+        Not counted: the :data:`RECENT` states a packed space keeps unpacked, a fixed
+        cost (as the lifted space's rebuilt states are not counted either)."""
+        if not self._stored:
+            return 0.0
+        count = len(self._stored)
+        total = sum(map(sys.getsizeof, self._stored))
+        total += sys.getsizeof(self._keys) + sys.getsizeof(self._stored)
+        total += (self.parents.itemsize + self.operators.itemsize) * count
+        return total / count
 
     def plan_to(self, number: int) -> list[int]:
         """The operator numbers on the path from the initial state to state ``number``."""

@@ -27,11 +27,13 @@ from strips_framework.grounding.task import GroundOperator, GroundTask, facts_in
 class Successors(Protocol):
     """What a state space needs of a successor generator."""
 
-    keep: Mapping[int, int]
+    delete: Mapping[int, int]
     add: Mapping[int, int]
     effects: Mapping[int, tuple[tuple[int, int, int, int], ...]] | None
 
     def applicable(self, state: int) -> list[int]: ...
+
+    def apply(self, state: int, operator: int) -> int: ...
 
 
 @collection_paused()
@@ -47,7 +49,9 @@ class _OperatorMasks(dict[int, int]):
     """Per operator number, a mask made on first use (``mask(operator)``): a search applies
     few of a large task's operators, and a mask costs as much as the task has facts."""
 
-    def __init__(self, mask: Callable[[GroundOperator], int], operators: Sequence[GroundOperator]) -> None:
+    def __init__(
+        self, mask: Callable[[GroundOperator], int], operators: Sequence[GroundOperator]
+    ) -> None:
         super().__init__()
         self._mask = mask
         self._operators = operators
@@ -75,9 +79,8 @@ class SuccessorGenerator:
         }
         self.unkeyed = tuple(unkeyed)
         self._operators = operators
-        #: Per operator: the mask of facts it keeps (all but its unconditional deletes),
-        #: and its unconditional adds.
-        self.keep = _OperatorMasks(lambda op: ~op.delete_mask, operators)
+        #: Per operator: the masks of its unconditional deletes and adds.
+        self.delete = _OperatorMasks(lambda op: op.delete_mask, operators)
         self.add = _OperatorMasks(lambda op: op.add_mask, operators)
         #: Per operator: its conditional effects as (condition, negated condition, delete,
         #: add) masks; None when no operator has any, so plain tasks pay nothing for them.
@@ -96,9 +99,16 @@ class SuccessorGenerator:
                     found.append(i)
         return found
 
+    def apply(self, state: int, operator: int) -> int:
+        """The state ``operator`` makes of ``state`` without its conditional effects
+        and axioms. Deletes come out as ``state ^ (state & delete)``, not ``state &
+        ~delete``: an operand's complement (a negative int) costs a conversion as long
+        as the state, several times the other operations (0.17 ms at a million facts
+        against 0.006 ms)."""
+        return (state ^ (state & self.delete[operator])) | self.add[operator]
+
 
 def _effect_masks(op: GroundOperator) -> tuple[tuple[int, int, int, int], ...]:
     return tuple(
         (e.condition_mask, e.condition_neg_mask, e.delete_mask, e.add_mask) for e in op.effects
     )
-

@@ -4,25 +4,31 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
 from strips_framework.records import Record
 
 
 class GoalCountEstimator(Record):
+    """Counts the goal facts a state holds and subtracts them from the goal's size:
+    ``goal_mask & state`` is as long as the goal mask, while the count of what is
+    missing, ``goal_mask & ~state``, complements the whole state first (a negative
+    int), a cost that grows with the task's facts, not with its goal."""
+
     goal_mask: int
 
-    __slots__ = ("goal_mask",)
+    FIELDS = ("goal_mask",)
+    __slots__ = (*FIELDS, "_goals")
 
     def __init__(self, goal_mask: int) -> None:
         self.goal_mask = goal_mask
+        self._goals = goal_mask.bit_count()
 
     def estimate(self, state: int) -> float:
-        return (self.goal_mask & ~state).bit_count()
+        return self._goals - (self.goal_mask & state).bit_count()
 
     def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
-        return (self.goal_mask & ~state).bit_count(), ()
+        return self._goals - (self.goal_mask & state).bit_count(), ()
 
 
 class GoalCountHeuristic(Configurable):

@@ -1,0 +1,60 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True
+"""Ground states packed and unpacked, compiled: the reference is
+:mod:`~strips_framework.forward.packing`. A state's digits are read and made in place
+(``digits.h``), so packing costs one step per 30 facts (a word compared with zero) and
+one per true fact, and unpacking one per digit (zeroed) and one per true fact; the
+reference goes through a binary string and a byte string as long as the state."""
+
+from cpython.bytes cimport PyBytes_AS_STRING, PyBytes_FromStringAndSize
+from libc.stdint cimport uint32_t
+
+from strips_framework.forward.digits cimport (
+    STRIPS_DIGIT_BITS,
+    __builtin_ctz,
+    __builtin_popcount,
+    strips_digits,
+    strips_new_int,
+)
+
+
+def pack(state):
+    """The numbers of the facts true in ``state``, ascending, as 4-byte integers."""
+    if not isinstance(state, int):
+        raise TypeError("a state is an int")
+    cdef Py_ssize_t size, i, count = 0
+    cdef uint32_t* digits = strips_digits(state, &size)
+    if size < 0:
+        raise ValueError("a state is a non-negative int")
+    for i in range(size):
+        if digits[i]:
+            count += __builtin_popcount(digits[i])
+    cdef bytes packed = PyBytes_FromStringAndSize(NULL, count * 4)
+    cdef uint32_t* out = <uint32_t*> PyBytes_AS_STRING(packed)
+    cdef uint32_t digit
+    cdef Py_ssize_t at = 0
+    for i in range(size):
+        digit = digits[i]
+        while digit:
+            out[at] = <uint32_t> (i * STRIPS_DIGIT_BITS + __builtin_ctz(digit))
+            at += 1
+            digit &= digit - 1
+    return packed
+
+
+def unpack(bytes packed):
+    """The state (bitset) whose true facts ``packed`` lists."""
+    cdef Py_ssize_t count = len(packed) // 4, i, size, at
+    if count == 0:
+        return 0
+    cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(packed)
+    cdef uint32_t fact, top = 0
+    for i in range(count):  # the highest fact, wherever it is: no write out of bounds
+        if facts[i] > top:
+            top = facts[i]
+    state = strips_new_int(top // STRIPS_DIGIT_BITS + 1)
+    cdef uint32_t* digits = strips_digits(state, &size)
+    for i in range(count):
+        fact = facts[i]
+        at = fact // STRIPS_DIGIT_BITS
+        digits[at] |= (<uint32_t> 1) << (fact - at * STRIPS_DIGIT_BITS)
+    return state

@@ -1,0 +1,15 @@
+# The declarations of digits.h (see there) for the compiled modules that read states.
+from libc.stdint cimport uint32_t
+
+
+cdef extern from "digits.h":
+    const int STRIPS_DIGIT_BITS
+    uint32_t* strips_digits(object x, Py_ssize_t* size)
+    object strips_new_int(Py_ssize_t size)
+    void strips_set_size(object x, Py_ssize_t size)
+
+
+cdef extern from *:
+    # The lowest set bit's place and the set bits' count of a non-zero digit (GCC, Clang).
+    int __builtin_ctz(unsigned int x)
+    int __builtin_popcount(unsigned int x)
