@@ -300,8 +300,8 @@ class Planner(Record):
     def _means_ends_stage(self) -> Stage | None:
         """The first stage of a task too large to ground, when the registry and the
         config allow it (the means-ends components built and fitting together); else
-        None, and the lifted search runs alone. Warnings about tables this stage does not use are not shown: the
-        lifted stage uses them."""
+        None, and the lifted search runs alone. Warnings about tables this stage does
+        not use are not shown: the lifted stage uses them."""
         import warnings
 
         from strips_framework.portfolio import Stage
