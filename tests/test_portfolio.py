@@ -134,6 +134,24 @@ def test_a_slice_ends_on_time_inside_a_long_step_and_the_outer_alarm_comes_back(
     assert rings == []
 
 
+def test_a_slice_after_a_handler_set_outside_python_leaves_the_default(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """``signal.getsignal`` says None for a handler Python did not set; the slice cannot
+    put that back, and leaves the default rather than failing."""
+    monkeypatch.setattr(signal, "getsignal", lambda signum: None)
+    first = _Scripted("first", lambda: _Ended(Status.TIME_LIMIT))
+    last = _Scripted("last", lambda: "the last stage's result")
+    before = signal.signal(signal.SIGALRM, signal.SIG_IGN)
+    try:
+        result = Portfolio((Stage(first, 0.5), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
+        after = signal.signal(signal.SIGALRM, before)
+    finally:
+        signal.signal(signal.SIGALRM, before)
+    assert result == "the last stage's result"
+    assert after is signal.SIG_DFL
+
+
 def test_an_interrupted_stage_ends_the_portfolio() -> None:
     first = _Scripted("first", lambda: _Ended(Status.INTERRUPTED))
     last = _Scripted("last", lambda: pytest.fail("ran after Ctrl-C"))

@@ -152,7 +152,9 @@ def _slice(seconds: float) -> Iterator[None]:
         yield
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, outer_handler)
+        # None: the handler was set outside Python, which cannot be put back; the
+        # default then, as before any handler was set.
+        signal.signal(signal.SIGALRM, signal.SIG_DFL if outer_handler is None else outer_handler)
         if outer_delay > 0:
             left = max(outer_delay - (time.perf_counter() - started), 1e-3)
             signal.setitimer(signal.ITIMER_REAL, left, outer_interval)
