@@ -4,6 +4,8 @@ and nodes that share a model and first goal share its analysis."""
 from pathlib import Path
 from types import SimpleNamespace
 
+import pytest
+
 from strips_framework.formats.native import parse_problem
 from strips_framework.limits import Clock, Limits
 from strips_framework.means_ends.difference import UncompletedProofDifference
@@ -161,3 +163,25 @@ def test_after_an_application_a_deeper_goal_that_cannot_hold_is_not_tried():
     # boxes at one place, a conjunctive query) has no match in the model's facts.
     assert run.goal_prover.attempts == attempts
     assert (model, unneeded.precondition(), 1) not in run.goal_prover._cache
+
+
+def test_an_attempt_a_limit_ends_is_counted_with_its_time():
+    """The time limit can end a proof attempt (the CLI's alarm raises inside the prover);
+    the statistics must still count that attempt and the time it took."""
+    import time
+
+    from strips_framework.limits import LimitReached
+
+    run, root, top = _run(AddListRelevance())
+    prover = run.goal_prover
+
+    class _Stopped:
+        def prove(self, *args, **kwargs):
+            time.sleep(0.02)
+            raise LimitReached.of("time")
+
+    prover.session = _Stopped()
+    with pytest.raises(LimitReached):
+        prover.prove(root, top.formula)
+    assert prover.attempts == 1
+    assert prover.seconds >= 0.02
