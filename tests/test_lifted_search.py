@@ -469,8 +469,10 @@ def test_default_strategy_grounds_only_cheap_tasks_and_says_why(
     import json
 
     document = json.loads(captured.out)
-    # A task too large to ground gets means-ends analysis first, which solves this one.
-    assert document["family"] == ("world-model" if chosen.startswith("lifted") else "forward")
+    # A task too large to ground gets means-ends beside the lifted search; both solve this
+    # one, and which is first depends on timing (tests/test_portfolio.py covers the race).
+    lifted = ("world-model", "lifted")
+    assert document["family"] in (lifted if chosen.startswith("lifted") else ("forward",))
     assert document["plan"] == ["(pick-up b1)", "(stack b1 b0)"]
 
 
@@ -495,7 +497,7 @@ def test_a_wide_task_too_large_to_ground_is_searched_lazily(
     domain = EXAMPLES / "blocksworld" / "domain.pddl"
     assert main(["solve", str(domain), str(problem), "--json"]) == 0
     err = capsys.readouterr().err
-    assert f"strips: strategy means-ends, then {chosen}: grounding looks expensive" in err
+    assert f"strips: strategy means-ends and {chosen}: grounding looks expensive" in err
     if chosen == "lifted-gbfs":
         assert f"more than {wide} action instances applicable in the initial state" in err
     else:

@@ -1,8 +1,9 @@
 """The portfolio of a task too large to ground (strips_framework.portfolio): means-ends
-analysis for a slice of the time limit, then the lifted search."""
+analysis for a share of the time limit, in turn or beside the lifted search."""
 
 from __future__ import annotations
 
+import os
 import signal
 import time
 from pathlib import Path
@@ -10,6 +11,7 @@ from typing import Any
 
 import pytest
 
+from strips_framework import portfolio
 from strips_framework.errors import InputError
 from strips_framework.limits import Clock
 from strips_framework.pddl import parse_task
@@ -47,13 +49,19 @@ class _Scripted:
 
 
 class _Ended:
-    """A stand-in result: how a stage ended."""
+    """A stand-in result: how a stage ended (picklable, as a stage beside the others
+    hands its result over in a file)."""
 
-    def __init__(self, status: Status) -> None:
+    def __init__(self, status: Status, plan: tuple[str, ...] | None = None) -> None:
         self.status = status
+        self.plan = plan
 
     def _replace(self, **changes: Any) -> _Ended:
         return self
+
+
+#: The last stage's result in the tests that only follow which stage's result comes back.
+_LAST = _Ended(Status.TIME_LIMIT)
 
 
 def test_a_stage_that_finds_no_plan_hands_the_task_to_the_next(capsys: pytest.CaptureFixture[str]) -> None:
@@ -94,9 +102,9 @@ def test_a_stage_that_cannot_search_the_task_is_skipped_saying_why(
         raise InputError("t.pddl", 3, None, "a feature this search does not handle")
 
     first = _Scripted("first", refuse)
-    last = _Scripted("last", lambda: "the last stage's result")
+    last = _Scripted("last", lambda: _LAST)
     result = Portfolio((Stage(first, 0.5), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
-    assert result == "the last stage's result"
+    assert result is _LAST
     err = capsys.readouterr().err
     assert "strips: first cannot search this task (" in err
     assert "a feature this search does not handle" in err and "continuing with last" in err
@@ -119,14 +127,14 @@ def test_a_slice_ends_on_time_inside_a_long_step_and_the_outer_alarm_comes_back(
     signal.setitimer(signal.ITIMER_REAL, 100.0)
     try:
         first = _Scripted("busy", busy)
-        last = _Scripted("last", lambda: "the last stage's result")
+        last = _Scripted("last", lambda: _LAST)
         result = Portfolio((Stage(first, 0.01), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
         handler_after = signal.getsignal(signal.SIGALRM)
         left, _ = signal.getitimer(signal.ITIMER_REAL)
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, outer)
-    assert result == "the last stage's result"
+    assert result is _LAST
     assert len(steps) < 1000
     assert handler_after is not None and handler_after not in (signal.SIG_DFL, signal.SIG_IGN)
     assert handler_after.__name__ == "<lambda>"
@@ -141,14 +149,14 @@ def test_a_slice_after_a_handler_set_outside_python_leaves_the_default(
     put that back, and leaves the default rather than failing."""
     monkeypatch.setattr(signal, "getsignal", lambda signum: None)
     first = _Scripted("first", lambda: _Ended(Status.TIME_LIMIT))
-    last = _Scripted("last", lambda: "the last stage's result")
+    last = _Scripted("last", lambda: _LAST)
     before = signal.signal(signal.SIGALRM, signal.SIG_IGN)
     try:
         result = Portfolio((Stage(first, 0.5), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
         after = signal.signal(signal.SIGALRM, before)
     finally:
         signal.signal(signal.SIGALRM, before)
-    assert result == "the last stage's result"
+    assert result is _LAST
     assert after is signal.SIG_DFL
 
 
@@ -170,8 +178,118 @@ def test_a_task_too_large_to_ground_gets_means_ends_first_and_says_so(
     problem.write_text((EXAMPLES / "blocksworld" / "p4.pddl").read_text())
     assert main(["solve", str(EXAMPLES / "blocksworld" / "domain.pddl"), str(problem), "--json"]) == 0
     err = capsys.readouterr().err
-    assert "strips: strategy means-ends, then lifted-alt-bfws: grounding looks expensive" in err
-    assert "first means-ends for at most 10% of the time limit" in err
+    assert "strips: strategy means-ends and lifted-alt-bfws: grounding looks expensive" in err
+    assert "means-ends beside it, for at most 10% of the time limit in CPU" in err
+    assert "strips: means-ends runs beside lifted-alt-bfws in a second process" in err
+
+
+def test_means_ends_runs_beside_unless_something_in_this_process_watches_the_search() -> None:
+    """An observer or the progress line would not see a search in a second process."""
+    planner = Planner.create()
+    stage = planner._means_ends_stage()
+    assert stage is not None and stage.beside
+    watched = planner._replace(observers=(object(),))._means_ends_stage()
+    assert watched is not None and not watched.beside
+    shown = planner._replace(progress=object())._means_ends_stage()
+    assert shown is not None and not shown.beside
+
+
+class _Started:
+    """The children a portfolio starts, recorded (by wrapping ``_Beside.start``)."""
+
+    def __init__(self, monkeypatch: pytest.MonkeyPatch) -> None:
+        self.children: list[Any] = []
+        start = portfolio._Beside.start
+
+        def recorded(*args: Any) -> Any:
+            child = start(*args)
+            self.children.append(child)
+            return child
+
+        monkeypatch.setattr(portfolio._Beside, "start", staticmethod(recorded))
+
+
+def _spin() -> Any:
+    """A search that never ends by itself (CPU-bound, so a CPU-time alarm ends it)."""
+    while True:
+        sum(range(1000))
+
+
+def test_a_plan_found_beside_ends_the_search_in_the_parent(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    started = _Started(monkeypatch)
+    steps: list[int] = []
+
+    def busy() -> Any:
+        for step in range(2000):  # 20 s unless the child's plan stops it
+            time.sleep(0.01)
+            steps.append(step)
+        return _Ended(Status.TIME_LIMIT)
+
+    first = _Scripted("first", lambda: _Ended(Status.SOLVED, ("(a)",)))
+    last = _Scripted("last", busy)
+    result = Portfolio((Stage(first, 0.5, beside=True), Stage(last))).solve_pddl(None, Clock(30.0))  # type: ignore[arg-type]
+    assert result.status == Status.SOLVED and result.plan == ("(a)",)
+    assert first.clocks == []  # it searched in the child, not here
+    assert len(steps) < 2000
+    assert [child.exit_code for child in started.children] == [0]
+    assert not Path(started.children[0].path).exists()
+    assert "strips: first found a plan in its second process" in capsys.readouterr().err
+
+
+def test_a_plan_found_in_the_parent_first_kills_the_search_beside_it(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    started = _Started(monkeypatch)
+    first = _Scripted("first", _spin)
+    last = _Scripted("last", lambda: _Ended(Status.SOLVED, ("(b)",)))
+    result = Portfolio((Stage(first, 0.5, beside=True), Stage(last))).solve_pddl(None, Clock(30.0))  # type: ignore[arg-type]
+    assert result.plan == ("(b)",)
+    assert [child.exit_code for child in started.children] == [-signal.SIGKILL]
+    with pytest.raises(ChildProcessError):  # waited for: no zombie left behind
+        os.waitpid(started.children[0].pid, os.WNOHANG)
+
+
+def test_a_search_beside_ends_at_its_share_of_cpu_time(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The last stage gives up early (its own limit), so the portfolio waits for the
+    child; the child, spinning, is ended by its CPU-time alarm after 0.1 s of CPU and
+    exits by itself (1: no plan), long before the run's 30 s would have it killed."""
+    started = _Started(monkeypatch)
+    first = _Scripted("first", _spin)
+    last = _Scripted("last", lambda: _Ended(Status.MEMORY_LIMIT))
+    result = Portfolio((Stage(first, 0.1 / 30.0, beside=True), Stage(last))).solve_pddl(None, Clock(30.0))  # type: ignore[arg-type]
+    assert result.status == Status.MEMORY_LIMIT
+    assert [child.exit_code for child in started.children] == [1]
+
+
+def test_when_the_last_stage_gives_up_early_a_plan_found_beside_still_counts() -> None:
+    def later() -> Any:
+        time.sleep(0.2)
+        return _Ended(Status.SOLVED, ("(c)",))
+
+    first = _Scripted("first", later)
+    last = _Scripted("last", lambda: _Ended(Status.NODE_LIMIT))
+    result = Portfolio((Stage(first, 0.5, beside=True), Stage(last))).solve_pddl(None, Clock(30.0))  # type: ignore[arg-type]
+    assert result.plan == ("(c)",)
+
+
+def test_outside_the_main_thread_a_stage_beside_runs_in_turn() -> None:
+    """Signals reach only the main thread, so no child can be watched from another."""
+    import threading
+
+    first = _Scripted("first", lambda: _Ended(Status.TIME_LIMIT))
+    last = _Scripted("last", lambda: _LAST)
+    results: list[Any] = []
+    thread = threading.Thread(
+        target=lambda: results.append(
+            Portfolio((Stage(first, 0.5, beside=True), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
+        )
+    )
+    thread.start()
+    thread.join()
+    assert results == [_LAST]
+    assert len(first.clocks) == 1  # it ran here, in turn
 
 
 def test_stage_shares_are_checked() -> None:
@@ -181,3 +299,7 @@ def test_stage_shares_are_checked() -> None:
             Stage(planner, share)
     with pytest.raises(ValueError, match="at least one stage"):
         Portfolio(())
+    with pytest.raises(ValueError, match="needs its share"):
+        Stage(planner, beside=True)
+    with pytest.raises(ValueError, match="no stage to run beside"):
+        Portfolio((Stage(planner), Stage(planner, 0.5, beside=True)))

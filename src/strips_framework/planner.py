@@ -48,13 +48,13 @@ PDDL_LIFTED_STRATEGY = "lifted-alt-bfws"
 #: The strategy of a wide task whose grounding looks expensive: lazy greedy search, which
 #: draws a state's children as it needs them (and rates each one it takes).
 PDDL_WIDE_LIFTED_STRATEGY = "lifted-gbfs"
-#: Before either, a task whose grounding looks expensive gets the paper's means-ends
-#: analysis for this share of the time limit (see :mod:`strips_framework.portfolio`): it
-#: never grounds and works back from the goal, so a small goal in a huge world costs it
-#: what the goal touches (3-5 ``on`` atoms among 1,900 blocks: a second), where a
-#: progression search is lost among the world's other branches. A tenth of the limit
-#: covers the tasks it solves (the hard-to-ground set's blocks tasks take 0.1-2 s) and
-#: leaves the lifted search nine tenths where it does not.
+#: Beside either, a task whose grounding looks expensive gets the paper's means-ends
+#: analysis for this share of the time limit, in CPU seconds of a second process (see
+#: :mod:`strips_framework.portfolio`): it never grounds and works back from the goal, so
+#: a small goal in a huge world costs it what the goal touches (3-5 ``on`` atoms among
+#: 1,900 blocks: a second), where a progression search is lost among the world's other
+#: branches. A tenth of the limit covers the tasks it solves (the hard-to-ground set's
+#: blocks tasks take 0.1-2 s) and costs the lifted search at most that where it does not.
 PDDL_MEANS_ENDS_SHARE = 0.1
 #: The world-model strategy of that first stage.
 PDDL_MEANS_ENDS_STRATEGY = "means-ends"
@@ -286,10 +286,10 @@ class Planner(Record):
 
         share = f"{PDDL_MEANS_ENDS_SHARE:.0%} of the time limit"
         stages = (first, Stage(planner))
+        when = f"beside it, for at most {share} in CPU" if first.beside else f"first, for at most {share}"
         return Portfolio(stages), (
-            f"strategy {first.name}, then {name}: {why}; first {first.name} for at most "
-            f"{share} (it works back from the goal, so a small goal in a large world costs "
-            "it what the goal touches)"
+            f"strategy {first.name} and {name}: {why}; {first.name} {when} (it works back from "
+            "the goal, so a small goal in a large world costs it what the goal touches)"
         )
 
     def _with_strategy(self, name: str) -> Planner:
@@ -301,7 +301,12 @@ class Planner(Record):
         """The first stage of a task too large to ground, when the registry and the
         config allow it (the means-ends components built and fitting together); else
         None, and the lifted search runs alone. Warnings about tables this stage does
-        not use are not shown: the lifted stage uses them."""
+        not use are not shown: the lifted stage uses them.
+
+        It runs beside the lifted search (:mod:`strips_framework.portfolio`) unless
+        something in this process watches the search (observers, the progress line):
+        what a second process did, they would not see, so a watched run keeps one
+        process and gives means-ends its slice first."""
         import warnings
 
         from strips_framework.portfolio import Stage
@@ -312,7 +317,8 @@ class Planner(Record):
                 planner = self._with_strategy(PDDL_MEANS_ENDS_STRATEGY)
             except StripsError:
                 return None
-        return Stage(planner, PDDL_MEANS_ENDS_SHARE)
+        watched = bool(self.observers) or self.progress is not None
+        return Stage(planner, PDDL_MEANS_ENDS_SHARE, beside=not watched)
 
     def _can_search_ground_tasks_by_default(self) -> bool:
         """False when the strategy is a default ground search whose default heuristic is
