@@ -274,6 +274,24 @@ def test_when_the_last_stage_gives_up_early_a_plan_found_beside_still_counts() -
     assert result.plan == ("(c)",)
 
 
+def test_while_another_thread_runs_a_stage_beside_runs_in_turn() -> None:
+    """A fork would copy the locks the other thread holds (held for ever in the child)."""
+    import threading
+
+    stop = threading.Event()
+    other = threading.Thread(target=stop.wait)
+    other.start()
+    try:
+        first = _Scripted("first", lambda: _Ended(Status.TIME_LIMIT))
+        last = _Scripted("last", lambda: _LAST)
+        result = Portfolio((Stage(first, 0.5, beside=True), Stage(last))).solve_pddl(None, Clock(10.0))  # type: ignore[arg-type]
+    finally:
+        stop.set()
+        other.join()
+    assert result is _LAST
+    assert len(first.clocks) == 1  # it ran here, in turn
+
+
 def test_outside_the_main_thread_a_stage_beside_runs_in_turn() -> None:
     """Signals reach only the main thread, so no child can be watched from another."""
     import threading

@@ -322,11 +322,10 @@ def _write(result: Result, path: str) -> None:
 
 
 def _can_fork() -> bool:
-    return (
-        hasattr(os, "fork")
-        and hasattr(signal, "SIGCHLD")
-        and threading.current_thread() is threading.main_thread()
-    )
+    """Whether a child can be forked and watched: a platform with ``fork``, and only the
+    main thread running (signals reach no other, and a fork copies a lock another thread
+    holds, as a notebook's output threads do, held for ever in the child)."""
+    return hasattr(os, "fork") and hasattr(signal, "SIGCHLD") and threading.active_count() == 1
 
 
 def _check(besides: list[_Beside]) -> None:

@@ -76,6 +76,25 @@ def test_the_blocks_example_is_solved_and_the_plan_validated():
     assert int(result.metrics["expanded"]) >= 1
 
 
+@pytest.mark.parametrize(("cheap", "chosen"), [(10**6, "lazy-gbfs"), (10, "means-ends and lifted-alt-bfws")])
+def test_the_default_is_strips_solves_and_says_what_it_chose(monkeypatch, cheap, chosen):
+    """As ``strips solve`` does: ground when grounding looks cheap, else the searches
+    that never ground (here, with the bound lowered, on the blocks example); the choice
+    comes back as an INFO log message."""
+    from unified_planning.engines import LogLevel
+
+    from strips_framework.lifted import estimate
+
+    monkeypatch.setattr(estimate, "CHEAP_GROUNDING", cheap)
+    problem = _blocks()
+    with OneshotPlanner(name="strips") as planner:
+        result = planner.solve(problem, timeout=60)
+    assert result.status == UpStatus.SOLVED_SATISFICING and _valid(problem, result.plan)
+    [message] = result.log_messages
+    assert message.level == LogLevel.INFO
+    assert f"strategy {chosen}: grounding looks " in message.message
+
+
 def test_the_engine_is_found_by_kind():
     problem = _blocks()
     with OneshotPlanner(problem_kind=problem.kind) as planner:

@@ -1,8 +1,9 @@
 """The ``strips`` engine: a Unified Planning problem is written as PDDL with UP's own
 writer, read by strips-framework's PDDL reader, solved by the planner with the defaults
-of ``strips solve`` (lazy greedy search with hFF) or the strategy, heuristic, prover and
-evaluator the ``params`` choose, and the plan is mapped back to the problem's own actions
-and objects.
+of ``strips solve`` (lazy greedy search with hFF when grounding looks cheap, else the
+searches that never ground; the choice and its reason are an INFO log message) or the
+strategy, heuristic, prover and evaluator the ``params`` choose, and the plan is mapped
+back to the problem's own actions and objects.
 
 Going through PDDL text keeps one reader (with its checks and error messages) between UP
 and the planner, and the writer's name table maps every step back exactly, as the
@@ -35,6 +36,7 @@ from strips_framework.errors import StripsError
 from strips_framework.limits import Clock
 from strips_framework.pddl import parse_task
 from strips_framework.planner import GROUND_STRATEGY, Planner
+from strips_framework.portfolio import Portfolio
 from strips_framework.result import Result, Status
 
 Status_ = PlanGenerationResultStatus
@@ -88,7 +90,7 @@ class StripsEngine(Engine, OneshotPlannerMixin):
                 f"strips: unknown params {unknown} (known: {', '.join(COMPONENT_PARAMS)}, limits)"
             )
         self._params = params
-        self._planner(None)  # a bad choice or option is reported here, not at solve time
+        self._planner(None).for_pddl()  # a bad choice or option is reported here, not later
 
     @property
     def name(self) -> str:
@@ -140,7 +142,7 @@ class StripsEngine(Engine, OneshotPlannerMixin):
         config["limits"] = limits
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # soft capability warnings: the user chose
-            return Planner.create(config).for_pddl()
+            return Planner.create(config)
 
     def _solve(
         self,
@@ -159,7 +161,10 @@ class StripsEngine(Engine, OneshotPlannerMixin):
             task = parse_task(
                 writer.get_domain(), writer.get_problem(), "<UP domain>", "<UP problem>"
             )
-            result = planner.solve_pddl(task, clock, parse_seconds=clock.elapsed())
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                search, reason = planner.for_pddl_task(task)
+            result = search.solve_pddl(task, clock, parse_seconds=clock.elapsed())
         except StripsError as error:
             return PlanGenerationResult(
                 Status_.UNSUPPORTED_PROBLEM, None, self.name, log_messages=[_log(error)]
@@ -171,8 +176,13 @@ class StripsEngine(Engine, OneshotPlannerMixin):
         plan = None
         if result.plan is not None:
             plan = SequentialPlan([_action_instance(writer, step) for step in result.plan])
+        chosen = [_log(reason, up.engines.LogLevel.INFO)] if reason else []
         return PlanGenerationResult(
-            _status(planner, result), plan, self.name, metrics=_metrics(result)
+            _status(search, result),
+            plan,
+            self.name,
+            metrics=_metrics(result),
+            log_messages=chosen,
         )
 
 
@@ -188,9 +198,11 @@ def _action_instance(writer: PDDLWriter, step: str) -> ActionInstance:
     return ActionInstance(action, arguments)  # type: ignore[arg-type]
 
 
-def _status(planner: Planner, result: Result) -> PlanGenerationResultStatus:
+def _status(planner: Planner | Portfolio, result: Result) -> PlanGenerationResultStatus:
     status = STATUS[result.status]
-    if status != Status_.SOLVED_SATISFICING or not planner.searches_ground_tasks:
+    if status != Status_.SOLVED_SATISFICING or not isinstance(planner, Planner):
+        return status  # a portfolio's searches are satisficing
+    if not planner.searches_ground_tasks:
         return status
     strategy = planner.registry.get(GROUND_STRATEGY, planner.config.choice(GROUND_STRATEGY).name)
     heuristic = planner.registry.get("heuristic", planner.config.choice("heuristic").name)
@@ -207,5 +219,7 @@ def _metrics(result: Result) -> dict[str, str]:
     return {"engine_internal_time": f"{result.seconds:.6f}", **figures}
 
 
-def _log(error: StripsError) -> up.engines.LogMessage:
-    return up.engines.LogMessage(up.engines.LogLevel.ERROR, f"strips {__version__}: {error}")
+def _log(
+    message: StripsError | str, level: up.engines.LogLevel = up.engines.LogLevel.ERROR
+) -> up.engines.LogMessage:
+    return up.engines.LogMessage(level, f"strips {__version__}: {message}")
