@@ -321,3 +321,22 @@ def test_stage_shares_are_checked() -> None:
         Stage(planner, beside=True)
     with pytest.raises(ValueError, match="no stage to run beside"):
         Portfolio((Stage(planner), Stage(planner, 0.5, beside=True)))
+
+
+def test_a_result_file_that_cannot_be_read_is_no_plan(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The child said it found a plan but its file holds none (a full disk, say): the
+    parent's search goes on, rather than failing on the file in the middle of it."""
+
+    def nothing(result: Any, path: str) -> None:
+        Path(path).write_bytes(b"")
+
+    monkeypatch.setattr(portfolio, "_write", nothing)
+
+    def slow() -> Any:
+        time.sleep(0.3)
+        return _LAST
+
+    first = _Scripted("first", lambda: _Ended(Status.SOLVED, ("(a)",)))
+    last = _Scripted("last", slow)
+    result = Portfolio((Stage(first, 0.5, beside=True), Stage(last))).solve_pddl(None, Clock(30.0))  # type: ignore[arg-type]
+    assert result is _LAST

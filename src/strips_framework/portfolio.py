@@ -83,8 +83,8 @@ class Stage(Record):
     """One search of a portfolio: a checked planner, the share of the run's time limit it
     may use (``None``: what the earlier stages left), and whether it runs beside the
     stages after it (in a second process, for its share in CPU seconds) rather than
-    before them. A stage runs in turn where a second process cannot be made (no
-    ``fork``, or not the main thread)."""
+    before them. A stage runs in turn where a second process cannot be made or
+    watched (no ``fork``, or other threads running: see :func:`_can_fork`)."""
 
     planner: PddlSearch
     share: float | None
@@ -259,8 +259,11 @@ class _Beside:
                 return None
             self.exit_code = os.waitstatus_to_exitcode(status)
             if self.exit_code == 0:
-                with open(self.path, "rb") as file:
-                    result: Result = pickle.load(file)
+                try:
+                    with open(self.path, "rb") as file:
+                        result: Result = pickle.load(file)
+                except (OSError, EOFError, pickle.UnpicklingError):
+                    return None  # a file that could not be written whole: no plan here
                 return result
         return None
 
