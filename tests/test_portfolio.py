@@ -60,6 +60,14 @@ class _Ended:
         return self
 
 
+@pytest.fixture
+def alone(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The side-by-side tests run as if this were the process's only thread: threads an
+    earlier test left behind (a Dask client keeps its own for the life of the process)
+    would otherwise make every portfolio here run its stages in turn."""
+    monkeypatch.setattr(portfolio.threading, "active_count", lambda: 1)
+
+
 #: The last stage's result in the tests that only follow which stage's result comes back.
 _LAST = _Ended(Status.TIME_LIMIT)
 
@@ -167,8 +175,9 @@ def test_an_interrupted_stage_ends_the_portfolio() -> None:
     assert result.status == Status.INTERRUPTED
 
 
-def test_a_task_too_large_to_ground_gets_means_ends_first_and_says_so(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+def test_a_task_too_large_to_ground_gets_means_ends_beside_the_lifted_search_and_says_so(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch,
+    alone: None,
 ) -> None:
     from strips_framework.cli.main import main
     from strips_framework.lifted import estimate
@@ -216,7 +225,8 @@ def _spin() -> Any:
 
 
 def test_a_plan_found_beside_ends_the_search_in_the_parent(
-    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str],
+    alone: None,
 ) -> None:
     started = _Started(monkeypatch)
     steps: list[int] = []
@@ -240,6 +250,7 @@ def test_a_plan_found_beside_ends_the_search_in_the_parent(
 
 def test_a_plan_found_in_the_parent_first_kills_the_search_beside_it(
     monkeypatch: pytest.MonkeyPatch,
+    alone: None,
 ) -> None:
     started = _Started(monkeypatch)
     first = _Scripted("first", _spin)
@@ -251,7 +262,7 @@ def test_a_plan_found_in_the_parent_first_kills_the_search_beside_it(
         os.waitpid(started.children[0].pid, os.WNOHANG)
 
 
-def test_a_search_beside_ends_at_its_share_of_cpu_time(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_search_beside_ends_at_its_share_of_cpu_time(monkeypatch: pytest.MonkeyPatch, alone: None) -> None:
     """The last stage gives up early (its own limit), so the portfolio waits for the
     child; the child, spinning, is ended by its CPU-time alarm after 0.1 s of CPU and
     exits by itself (1: no plan), long before the run's 30 s would have it killed."""
@@ -263,7 +274,7 @@ def test_a_search_beside_ends_at_its_share_of_cpu_time(monkeypatch: pytest.Monke
     assert [child.exit_code for child in started.children] == [1]
 
 
-def test_when_the_last_stage_gives_up_early_a_plan_found_beside_still_counts() -> None:
+def test_when_the_last_stage_gives_up_early_a_plan_found_beside_still_counts(alone: None) -> None:
     def later() -> Any:
         time.sleep(0.2)
         return _Ended(Status.SOLVED, ("(c)",))
@@ -323,7 +334,7 @@ def test_stage_shares_are_checked() -> None:
         Portfolio((Stage(planner), Stage(planner, 0.5, beside=True)))
 
 
-def test_a_result_file_that_cannot_be_read_is_no_plan(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_result_file_that_cannot_be_read_is_no_plan(monkeypatch: pytest.MonkeyPatch, alone: None) -> None:
     """The child said it found a plan but its file holds none (a full disk, say): the
     parent's search goes on, rather than failing on the file in the middle of it."""
 
