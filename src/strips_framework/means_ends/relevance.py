@@ -21,7 +21,7 @@ from functools import cache
 from collections.abc import Iterator, Sequence
 from typing import ClassVar
 
-from strips_framework.logic.clauses import Clause
+from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Var, conjuncts
 from strips_framework.logic.terms import (
     EQUALITY,
@@ -36,6 +36,7 @@ from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
 from strips_framework.options import Configurable, Option
 from strips_framework.records import Record
+from strips_framework.worldmodel.fact_join import facts_join
 from strips_framework.worldmodel.operators import OperatorInstance, may_delete
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
@@ -237,15 +238,24 @@ def _resolvent(clause: Clause, position: int, unifier: dict) -> Clause:
 def _never_applicable(
     instance: OperatorInstance, rigid: frozenset[tuple[str, int]], model: WorldModel
 ) -> bool:
+    """Whether the rigid conjuncts of the instance's precondition can never hold: a
+    ground one is not a fact, or those with parameters still unbound have no binding
+    that maps them all onto facts at once (a join over the model's facts). Facts of
+    rigid predicates are only ever deleted, so what no fact matches now never will:
+    ``move-up(lift, ?f1, n0)`` for ``lift-at(lift, n0)`` needs ``above(?f1, n0)``,
+    and no floor is below the lowest."""
     binding = instance.binding_map()
+    unbound: list[Literal] = []
     # A translated PDDL precondition nests the action's own conjunction inside the type
     # atoms' one, so the conjuncts are flattened.
     for part in conjuncts(instance.schema.precondition):
         if isinstance(part, Atomic) and (part.atom[0], len(part.atom) - 1) in rigid:
             atom = substitute(part.atom, binding)
-            if is_ground(atom) and not model.holds(atom):
+            if not is_ground(atom):
+                unbound.append((False, atom))
+            elif not model.holds(atom):
                 return True
-    return False
+    return bool(unbound) and facts_join(model, unbound) is False
 
 
 def _missing_preconditions(
