@@ -156,5 +156,9 @@ def test_instances_whose_rigid_atoms_with_unbound_parameters_match_no_facts_are_
         Clause([(False, ("LIFTAT", "L", "mid"))]),
         Clause([(False, ("LIFTAT", "L", "top"))]),
     ])
-    found = _relevant(difference, [move_up], model)
-    assert [str(r.operator) for r in found] == ["move-up(L, low, mid)"]
+    joined = AddListRelevance(rigid_join=True).for_problem([move_up], model.initial)
+    assert [str(r.operator) for r in joined.relevant(difference, model)] == [
+        "move-up(L, low, mid)"
+    ]
+    # Off (the default), only ground rigid atoms are checked: all three are kept.
+    assert len(_relevant(difference, [move_up], model)) == 3
