@@ -161,3 +161,54 @@ def test_after_an_application_a_deeper_goal_that_cannot_hold_is_not_tried():
     # boxes at one place, a conjunctive query) has no match in the model's facts.
     assert run.goal_prover.attempts == attempts
     assert (model, unneeded.precondition(), 1) not in run.goal_prover._cache
+
+
+# A hoist lifts a crate off a surface (the crate must be clear) and drops it on a clear
+# surface. Crate d is to go onto pallet p, where crate c sits under crate e.
+HOIST = """
+(define (domain hoist)
+  (:predicates (on ?c ?s) (clear ?s) (lifting ?h ?c) (available ?h) (hoist ?h))
+  (:action lift :parameters (?h ?c ?s)
+    :precondition (and (hoist ?h) (available ?h) (on ?c ?s) (clear ?c))
+    :effect (and (lifting ?h ?c) (clear ?s) (not (available ?h)) (not (clear ?c))
+                 (not (on ?c ?s))))
+  (:action drop :parameters (?h ?c ?s)
+    :precondition (and (hoist ?h) (lifting ?h ?c) (clear ?s))
+    :effect (and (available ?h) (on ?c ?s) (clear ?c) (not (lifting ?h ?c))
+                 (not (clear ?s)))))
+"""
+HOIST_TASK = """
+(define (problem clear-the-pallet) (:domain hoist)
+  (:objects h c d e p q)
+  (:init (hoist h) (available h) (on c p) (on e c) (clear e) (on d q) (clear d))
+  (:goal (on d p)))
+"""
+
+
+def _loops_made(write_task, goal_loops: bool) -> list[str]:
+    """The subgoals made for a ``lift`` off pallet p that would drop a crate onto p."""
+    from strips_framework.pddl import to_problem
+
+    problem = to_problem(write_task(HOIST, HOIST_TASK))
+    limits = Limits(nodes=300)
+    prover = GoalProver(problem, ResolutionProver(), limits.effort)
+    run = MeansEndsRun(8, problem, prover, UncompletedProofDifference(), AddListRelevance(),
+                       _Level(), limits, Clock(limits.time), goal_loops=goal_loops)
+    run.search()
+    return [
+        str(node.goals[0].operator)
+        for node in run.tree.nodes
+        if len(node.goals) > 2 and node.goals[1].operator is not None
+        and node.goals[1].operator.schema.name == "lift"
+        and str(node.goals[1].operator).endswith(", p)")
+        and node.goals[0].operator.schema.name == "drop"
+        and str(node.goals[0].operator).endswith(", p)")
+    ]
+
+
+def test_no_subgoal_needs_what_the_operator_it_serves_is_pushed_to_add(write_task):
+    # lift(h, ?c, p) is pushed to clear p for drop(h, d, p); a partial proof of its
+    # precondition binds ?c to e (clear), leaving on(e, p), which drop(h, e, p) adds,
+    # but that drop needs p clear: a goal loop.
+    assert _loops_made(write_task, goal_loops=False)
+    assert _loops_made(write_task, goal_loops=True) == []
