@@ -131,3 +131,34 @@ def test_instances_with_parameters_left_unbound_only_when_none_binds_fully():
                              Clause([(False, ("ATR", "b"))])])
     found = _relevant(difference, [MOVE], EMPTY)
     assert [str(r.operator) for r in found] == ["move(m, b)"]
+
+
+def test_instances_whose_rigid_atoms_with_unbound_parameters_match_no_facts_are_dropped():
+    # Like elevators' move-up(lift, f1, f2) for lift-at(lift, f2): ABOVE is rigid, and
+    # no floor is below the lowest, so move-up to "ground" can never be applied, whatever
+    # f1 becomes. To "top", f1 has a value, but only jointly with REACHES: one floor is
+    # below "top" and the lift does not reach it, so that instance is dropped too, and
+    # only the move to "mid" (from "ground", which it reaches) is kept.
+    lift, low, high = Param("lift"), Param("low"), Param("high")
+    move_up = OperatorSchema(
+        "move-up", [lift, low, high],
+        And([Atomic(("LIFTAT", lift, low)), Atomic(("ABOVE", low, high)),
+             Atomic(("REACHES", lift, low))]),
+        [("LIFTAT", lift, high)], [("LIFTAT", lift, low)],
+    )
+    facts = [("ABOVE", "ground", "mid"), ("ABOVE", "mid", "top"), ("REACHES", "L", "ground")]
+    model = WorldModel(InitialModel(
+        [Clause([(True, fact)]) for fact in facts],
+        rigid=frozenset({("ABOVE", 2), ("REACHES", 2)}),
+    ))
+    difference = Difference([
+        Clause([(False, ("LIFTAT", "L", "ground"))]),
+        Clause([(False, ("LIFTAT", "L", "mid"))]),
+        Clause([(False, ("LIFTAT", "L", "top"))]),
+    ])
+    joined = AddListRelevance(rigid_join=True).for_problem([move_up], model.initial)
+    assert [str(r.operator) for r in joined.relevant(difference, model)] == [
+        "move-up(L, low, mid)"
+    ]
+    # Off (the default), only ground rigid atoms are checked: all three are kept.
+    assert len(_relevant(difference, [move_up], model)) == 3

@@ -17,11 +17,11 @@ which would delete ``NEXTTO(BOX1, BOX2)``).
 from __future__ import annotations
 
 from collections import defaultdict
-from functools import cache
 from collections.abc import Iterator, Sequence
+from functools import cache
 from typing import ClassVar
 
-from strips_framework.logic.clauses import Clause
+from strips_framework.logic.clauses import Clause, Literal
 from strips_framework.logic.formulas import And, Atomic, Exists, Formula, Var, conjuncts
 from strips_framework.logic.terms import (
     EQUALITY,
@@ -36,6 +36,7 @@ from strips_framework.logic.unify import substitute, unify
 from strips_framework.means_ends.node import Difference, RelevantInstance
 from strips_framework.options import Configurable, Option
 from strips_framework.records import Record
+from strips_framework.worldmodel.fact_join import facts_join
 from strips_framework.worldmodel.operators import OperatorInstance, may_delete
 from strips_framework.worldmodel.problem import OperatorSchema
 from strips_framework.worldmodel.world import InitialModel, WorldModel
@@ -64,6 +65,11 @@ class AddListRelevance(Configurable):
     tell whether they hold). ``"resolvent"`` (the default, which gives the paper's node
     counts) ranks by the resolvent alone. With the relaxed-plan evaluator on depot 03,
     "cost" takes 1,146 nodes where "resolvent" stops at the 10,000-node limit.
+
+    ``rigid_join = true`` drops an instance whose rigid conjuncts with parameters left
+    unbound have no joint match among M0's facts (see :meth:`AddListIndex._never_applicable`).
+    Off by default: with the paper's evaluator it changes the searches on elevators
+    (docs/means-ends.md, "Rigid atoms with unbound parameters").
     """
 
     name: ClassVar[str] = "add-list"
@@ -72,8 +78,12 @@ class AddListRelevance(Configurable):
     options = (
         Option("rank", str, "resolvent", choices=("resolvent", "cost"),
                doc="order relevant instances by the resolvent alone, or by what achieving them costs"),
+        Option("rigid_join", bool, False,
+               doc="also drop instances whose rigid precondition atoms with unbound "
+               "parameters no binding maps onto M0's facts at once"),
     )
     rank: str
+    rigid_join: bool
 
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel
@@ -88,21 +98,27 @@ class AddListRelevance(Configurable):
             if positive
         )
         return AddListIndex(
-            _add_atoms_by_predicate(operators), initial.rigid, concluded, self.rank == "cost"
+            _add_atoms_by_predicate(operators), initial.rigid, concluded, self.rank == "cost",
+            WorldModel(initial) if self.rigid_join else None,
         )
 
 
 class AddListIndex(Record):
     """:class:`AddListRelevance` for one problem: candidates by the predicate they add,
     and the rigid predicates of its M0 (only deleted, never added or concluded, so a
-    model's rigid facts are M0's less its deletions)."""
+    model's rigid facts are M0's less its deletions). ``unmatched`` remembers, by the
+    rigid precondition atoms of an instance left with unbound parameters, whether no
+    binding maps them onto M0's facts at once: then none maps them onto any model's,
+    and instances of many differences share the answer."""
 
     by_predicate: dict[tuple[str, int], list[tuple[OperatorSchema, dict[Param, Param], Atom]]]
     rigid: frozenset[tuple[str, int]]
     concluded: frozenset[tuple[str, int]]
     by_cost: bool
+    root: WorldModel | None
+    unmatched: dict[tuple[Atom, ...], bool]
 
-    __slots__ = ("by_predicate", "rigid", "concluded", "by_cost")
+    __slots__ = ("by_cost", "by_predicate", "concluded", "rigid", "root", "unmatched")
 
     def __init__(
         self,
@@ -110,11 +126,14 @@ class AddListIndex(Record):
         rigid: frozenset[tuple[str, int]],
         concluded: frozenset[tuple[str, int]] = frozenset(),
         by_cost: bool = False,
+        root: WorldModel | None = None,
     ) -> None:
         self.by_predicate = by_predicate
         self.rigid = rigid
         self.concluded = concluded
         self.by_cost = by_cost
+        self.root = root
+        self.unmatched = {}
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         """The relevant instances, ranked. When no instance binds all its parameters
@@ -162,6 +181,34 @@ class AddListIndex(Record):
                         ranked[found.operator] = (key, found)
         return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
 
+    def _never_applicable(self, instance: OperatorInstance, model: WorldModel) -> bool:
+        """Whether the rigid conjuncts of the instance's precondition can never hold: a
+        ground one is not a fact of ``model``, or those with parameters still unbound
+        have no binding that maps them all onto M0's facts at once (a join). Facts of
+        rigid predicates are only ever deleted, so what no fact of M0 matches no later
+        model's will: ``move-up(lift, ?f1, n0)`` for ``lift-at(lift, n0)`` needs
+        ``above(?f1, n0)``, and no floor is below the lowest. The join is made only
+        with ``rigid_join`` (``root`` set)."""
+        binding = instance.binding_map()
+        unbound: list[Atom] = []
+        # A translated PDDL precondition nests the action's own conjunction inside the
+        # type atoms' one, so the conjuncts are flattened.
+        for part in conjuncts(instance.schema.precondition):
+            if isinstance(part, Atomic) and (part.atom[0], len(part.atom) - 1) in self.rigid:
+                atom = substitute(part.atom, binding)
+                if not is_ground(atom):
+                    unbound.append(atom)
+                elif not model.holds(atom):
+                    return True
+        if not unbound or self.root is None:
+            return False
+        key = tuple(unbound)
+        verdict = self.unmatched.get(key)
+        if verdict is None:
+            literals: list[Literal] = [(False, atom) for atom in unbound]
+            verdict = self.unmatched[key] = facts_join(self.root, literals) is False
+        return verdict
+
     def _judge(
         self,
         instance: OperatorInstance,
@@ -171,7 +218,7 @@ class AddListIndex(Record):
         """``None`` when ``instance`` can never be applied in ``model``'s successors,
         else what ranks it besides its resolvent: its missing precondition atoms (with
         ``rank = "cost"``; 0 otherwise) and the facts of the proof it may delete."""
-        if _never_applicable(instance, self.rigid, model):
+        if self._never_applicable(instance, model):
             return None
         missing = _missing_preconditions(instance, model, self.concluded) if self.by_cost else 0
         return missing, _deleted_count(instance, protected)
@@ -232,20 +279,6 @@ def _resolvent(clause: Clause, position: int, unifier: dict) -> Clause:
         if i != position
     ]
     return Clause(list(dict.fromkeys(rest)), clause.bindings, label="relevance")
-
-
-def _never_applicable(
-    instance: OperatorInstance, rigid: frozenset[tuple[str, int]], model: WorldModel
-) -> bool:
-    binding = instance.binding_map()
-    # A translated PDDL precondition nests the action's own conjunction inside the type
-    # atoms' one, so the conjuncts are flattened.
-    for part in conjuncts(instance.schema.precondition):
-        if isinstance(part, Atomic) and (part.atom[0], len(part.atom) - 1) in rigid:
-            atom = substitute(part.atom, binding)
-            if is_ground(atom) and not model.holds(atom):
-                return True
-    return False
 
 
 def _missing_preconditions(

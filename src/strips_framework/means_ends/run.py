@@ -8,7 +8,8 @@ import heapq
 from collections.abc import Iterator
 
 from strips_framework.limits import Clock, LimitReached, Limits
-from strips_framework.logic.formulas import Formula
+from strips_framework.logic.formulas import Formula, atoms_of
+from strips_framework.logic.terms import Atom, is_ground
 from strips_framework.means_ends.components import (
     DifferenceExtractor,
     NodeEvaluator,
@@ -43,6 +44,7 @@ class MeansEndsRun:
         parent: Node | None = None,
         max_nodes: int | None = None,
         distinct_plans: bool = False,
+        goal_loops: bool = False,
     ) -> None:
         self.max_goals = max_goals
         self.goal_prover = goal_prover
@@ -66,6 +68,7 @@ class MeansEndsRun:
         self.parent = parent
         self.max_nodes = max_nodes
         self.distinct_plans = distinct_plans
+        self.goal_loops = goal_loops
 
     def solutions(self) -> Iterator[Node]:
         """The goal nodes of the search, in the order found: asked for another, the
@@ -194,6 +197,29 @@ class MeansEndsRun:
             relevant = self.relevance.relevant(node.difference, node.model)
             self.analysed[key] = (node.difference, relevant)
         on_goal_list = {goal.operator for goal in node.goals}
-        node.pending = [found for found in relevant if found.operator not in on_goal_list]
+        looping = self._looping_atoms(node) if self.goal_loops else set()
+        node.pending = [
+            found for found in relevant
+            if found.operator not in on_goal_list
+            and looping.isdisjoint(atoms_of(found.operator.precondition()))
+        ]
         if node.pending:
             self._push(node)
+
+    def _looping_atoms(self, node: Node) -> set[Atom]:
+        """What a subgoal pushed at ``node`` must not need: the ground atoms that the
+        first goal's operator adds, that the goal below it needs and that the model
+        lacks. That operator was pushed to achieve them, so an instance for its
+        precondition that needs one of them first is a goal loop (GPS's check, one
+        level deep): ``lift(x, y, pallet2, p)``, pushed to clear pallet2 for a drop onto
+        it, would get ``drop(x, crate9, pallet2, p)`` for its ``on(y, pallet2)``, and
+        that drop needs pallet2 clear. Only a pushed first goal is looked at (a planned
+        one is not there for the goal below it)."""
+        first = node.goals[0]
+        if first.operator is None or first in self.planned or len(node.goals) < 2:
+            return set()
+        below = set(atoms_of(node.goals[1].formula))
+        return {
+            atom for atom in first.operator.effects()[1]
+            if atom in below and is_ground(atom) and not node.model.holds(atom)
+        }

@@ -33,7 +33,9 @@ class MeansEndsSearch(Configurable):
     """Means-ends analysis as STRIPS does it.
 
     ``max_goals`` bounds the goal list (the depth of subgoaling), which keeps the search
-    from regressing forever through ever deeper preconditions.
+    from regressing forever through ever deeper preconditions. ``goal_loops`` drops a
+    relevant instance whose precondition needs an atom that the operator of the goal
+    it would serve was pushed to add (:meth:`MeansEndsRun._looping_atoms`).
     """
 
     name: ClassVar[str] = "means-ends"
@@ -47,9 +49,12 @@ class MeansEndsSearch(Configurable):
                doc="the longest goal list (depth of subgoaling)"),
         Option("goal_agenda", bool, False,
                doc="achieve G0's atoms in layers by reasonable orders (goal_order.py)"),
+        Option("goal_loops", bool, True,
+               doc="no subgoal that needs what the operator it serves is there to add"),
     )
     max_goals: int
     goal_agenda: bool
+    goal_loops: bool
 
     def search(
         self,
@@ -73,5 +78,6 @@ class MeansEndsSearch(Configurable):
         run = MeansEndsRun(self.max_goals, problem, goal_prover,
                            differences, relevance, evaluator, limits,
                            clock or Clock(limits.time),
-                           planned=tuple(Goal(formula) for formula in agenda))
+                           planned=tuple(Goal(formula) for formula in agenda),
+                           goal_loops=self.goal_loops)
         return run.search()
