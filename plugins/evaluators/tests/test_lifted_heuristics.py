@@ -182,20 +182,25 @@ def test_each_rule_instance_is_found_once_and_only_if_it_improves(seed, monkeypa
     and from its first atom that fact matches, never twice (the values would not show
     it, the time would). Branch and bound: an instance is completed only if it makes one
     of its heads cheaper (organic synthesis has thousands of instances per head), unless
-    its cost depends on it."""
+    its cost depends on it; and, exploring until the goal is settled, only if it costs no
+    more than every goal fact so far (nothing dearer is settled before the end)."""
     from strips_evaluators.lifted import exploration
 
     found: list[tuple] = []
     improving: list[bool] = []
+    goal: list[tuple] = []
     join = exploration.costed_join
 
     def recording(program, plan, fact, lookup, cost, fire, functions, additive, limit):
+        assert limit == max([cost.get(g, math.inf) for g in goal], default=math.inf)
+
         def record(plan, slots, matched, body):
             before = [cost.get(make(slots), math.inf) for make in plan.rule.makers]
             value = fire(plan, slots, matched, body)
             found.append((plan.rule.number, tuple(slots)))
             # (a cost per instance is only known complete: bounded by 0 before)
             improving.append(any(value < old for old in before) or plan.rule.cost is None)
+            improving[-1] &= body + (plan.rule.cost or 0) <= limit
             return value
 
         join(program, plan, fact, lookup, cost, record, functions, additive, limit)
@@ -207,9 +212,10 @@ def test_each_rule_instance_is_found_once_and_only_if_it_improves(seed, monkeypa
     grounded = ground(task, prune_irrelevant=False)
     changed = {atom.predicate for action in task.domain.actions for atom in action.changed_atoms()}
     for state in reachable(grounded, 10):
-        for additive in (True, False):
+        for additive, until in [(True, ()), (False, ()), (True, None), (False, None)]:
             found.clear()
-            explorer.costs(lifted_state(grounded, state, changed), additive, until=())
+            goal[:] = program.fluent_goal if until is None else until
+            explorer.costs(lifted_state(grounded, state, changed), additive, until)
             assert len(found) == len(set(found))
             assert all(improving)
 
@@ -257,3 +263,28 @@ def test_instances_sharing_heads_are_completed_once(tmp_path, monkeypatch):
             ("g", x): 1 for x in objects
         }
         assert len(fired) == len(objects)
+
+
+LIMIT_DOMAIN = """(define (domain limit)
+  (:predicates (a) (h) (t) (u) (g) (w))
+  (:action mk-h :precondition (a) :effect (and (h) (not (a))))
+  (:action mk-g :precondition (h) :effect (g))
+  (:action mk-t :precondition (a) :effect (t))
+  (:action mk-u :precondition (a) :effect (u))
+  (:action mk-w :precondition (and (t) (u)) :effect (w)))"""
+
+
+def test_instances_dearer_than_the_goal_are_not_completed(tmp_path):
+    """``h`` is settled first at cost 1, so ``g``, the goal, costs 2 from then on; ``u``
+    completes ``mk-w`` at 1 + 1 + 1 = 3: dearer than the goal, never settled before the
+    exploration stops, so not completed (``w`` gets no cost)."""
+    (tmp_path / "domain.pddl").write_text(LIMIT_DOMAIN)
+    (tmp_path / "problem.pddl").write_text(
+        "(define (problem p) (:domain limit) (:init (a)) (:goal (g)))"
+    )
+    explorer = Exploration(Program(load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl")))
+    cost, _ = explorer.costs(frozenset({("a",)}), additive=True)
+    assert cost[("g",)] == 2
+    assert ("w",) not in cost
+    cost, _ = explorer.costs(frozenset({("a",)}), additive=True, until=())
+    assert cost[("w",)] == 3
