@@ -663,6 +663,16 @@ class Program(RuleProgram):
                     shared.update(atom.args)
         needed = shared | {t for a in heads for t in a.args}
         slot = {p.name: i for i, p in enumerate(params + clause.params)}
+        if any(
+            len(atoms) > 1 and all(v in needed for v in kinds if member[v] == key)
+            for key, atoms in groups.items()
+            if key is not None
+        ):
+            # A part of several atoms that projects nothing away would be materialized
+            # whole, where the unsplit rule's branch and bound completes one instance per
+            # head: kept whole.
+            self._add(clause, params, heads, action, operator, cost, line, identity)
+            return
         # Per part: its variables, the auxiliary atom over those some head needs.
         made: list[tuple[list[str], Atom]] = []
         for number, (key, atoms) in enumerate(groups.items()):
