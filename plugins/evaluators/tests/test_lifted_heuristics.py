@@ -288,37 +288,3 @@ def test_instances_dearer_than_the_goal_are_not_completed(tmp_path):
     assert ("w",) not in cost
     cost, _ = explorer.costs(frozenset({("a",)}), additive=True, until=())
     assert cost[("w",)] == 3
-
-
-SHARED_FACT_DOMAIN = """(define (domain shared)
-  (:predicates (s ?x ?y) (p ?x ?y) (g ?x ?z) (q ?x ?y))
-  (:action make :parameters (?x ?y) :precondition (s ?x ?y) :effect (p ?x ?y))
-  (:action pair :parameters (?x ?y ?z ?w)
-    :precondition (and (p ?x ?y) (p ?z ?w)) :effect (g ?x ?z))
-  (:action same :parameters (?x ?y) :precondition (and (p ?x ?x) (= ?x ?y))
-    :effect (q ?x ?y)))"""
-
-
-def test_parts_that_share_a_fact_count_it_once(tmp_path):
-    """``pair``'s two atoms share no variable, so its rule is split into two parts; with
-    ``?x = ?z`` and ``?y = ?w`` both match one fact, which the action's hadd counts once:
-    a variant of the rule with them equated gives ``(g a a)`` 1 + 1, not 1 + 1 + 1. In
-    ``same``, ``?y`` is bound by no atom: it is copied from ``?x``, not enumerated."""
-    (tmp_path / "domain.pddl").write_text(SHARED_FACT_DOMAIN)
-    (tmp_path / "problem.pddl").write_text(
-        "(define (problem p) (:domain shared) (:objects a b)"
-        " (:init (s a b) (s b b)) (:goal (and (g a a) (q b b))))"
-    )
-    program = Program(load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl"))
-    assert any(rule.parts for rule in program.rules)  # split
-    state = frozenset({("s", "a", "b"), ("s", "b", "b")})
-    cost, _ = Exploration(program).costs(state, additive=True, until=())
-    assert cost[("g", "a", "a")] == 2
-    assert cost[("g", "a", "b")] == 3
-    assert cost[("q", "b", "b")] == 2
-    (same,) = [
-        plan
-        for plan in program.triggers["p"]
-        if plan.rule.action != AXIOM and program.action_names[plan.rule.action] == "same"
-    ]
-    assert same.copies == ((0, 1),) and same.free == ()

@@ -181,10 +181,7 @@ def join(
     steps = plan.steps
     final = functions.final
     free = functions.free
-    copies = plan.copies
     if not steps and not free:  # one atom: nothing to join
-        for source, target in copies:
-            slots[target] = slots[source]
         if final is None or final(slots):
             emit(plan, slots, matched)
         return
@@ -196,8 +193,6 @@ def join(
 
     def extend(depth: int) -> None:
         if depth == last:
-            for source, target in copies:
-                slots[target] = slots[source]
             if simple:
                 emit(plan, slots, matched)
             elif not free:
@@ -280,10 +275,7 @@ def costed_join(
     above = limit - base  # a body dearer than this is cut
     if start > above:
         return
-    copies = plan.copies
     if not steps and not free:  # one atom: nothing to join
-        for source, target in copies:
-            slots[target] = slots[source]
         if (final is None or final(slots)) and base + start < max(
             [cost_get(make(slots), inf) for make in makers]
         ):
@@ -300,9 +292,6 @@ def costed_join(
         """Completes the binding of ``steps[:depth]`` at cost ``body``; returns ``cap``,
         the cost at or above which a completion improves no head, as the completions
         left it (meaningful once the heads are bound)."""
-        if depth == last:
-            for source, target in copies:
-                slots[target] = slots[source]
         if depth == heads_at:
             cap = max([cost_get(make(slots), inf) for make in makers])
             if base + body >= cap:

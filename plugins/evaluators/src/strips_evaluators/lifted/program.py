@@ -38,12 +38,6 @@ from strips_framework.records import Record
 GOAL: GroundAtom = ("@goal",)
 #: ``Rule.action`` of a rule that comes from a derived predicate or the goal.
 AXIOM = -1
-#: The most rules one action's rule may become when its parts can share facts
-#: (:meth:`Program._variants`) before it is kept whole.
-MAX_VARIANTS = 32
-#: Past this many variants, a rule is split only if its split keeps at most half of its
-#: variables.
-FEW_VARIANTS = 4
 
 
 class Check(Record):
@@ -124,9 +118,7 @@ class Plan(Record):
     settles fluent facts gradually, and a static relation joined before an empty fluent
     one would be enumerated for nothing). ``heads_at`` is the number of steps after which
     every slot of the rule's heads is bound (``len(steps) + 1`` when a free slot is in a
-    head): from there on a costed join knows what the completions would improve.
-    ``copies`` ``(from, to)``: slots no atom binds but an equality ties to a bound one,
-    written once every step has matched (the variants of split rules equate variables)."""
+    head): from there on a costed join knows what the completions would improve."""
 
     rule: Rule
     trigger: Step | None
@@ -136,11 +128,9 @@ class Plan(Record):
     final_checks: tuple[Check, ...]
     probes: tuple[tuple[int, ...], ...]
     heads_at: int
-    copies: tuple[tuple[int, int], ...]
 
     __slots__ = (
         "rule", "trigger", "steps", "free", "domains", "final_checks", "probes", "heads_at",
-        "copies",
     )  # fmt: skip
 
     def __init__(
@@ -153,7 +143,6 @@ class Plan(Record):
         final_checks: tuple[Check, ...],
         probes: tuple[tuple[int, ...], ...],
         heads_at: int,
-        copies: tuple[tuple[int, int], ...] = (),
     ) -> None:
         self.rule = rule
         self.trigger = trigger
@@ -163,7 +152,6 @@ class Plan(Record):
         self.final_checks = final_checks
         self.probes = probes
         self.heads_at = heads_at
-        self.copies = copies
 
 
 class Rule(Record):
@@ -443,17 +431,6 @@ class RuleProgram:
             before = trigger is not None and is_fluent and best < trigger
             bound_before.append(set(bound))
             steps.append(self._step(atoms[best], bound, pending, is_fluent, before))
-        # A variable bound by no atom but equal to a bound term is copied from it.
-        copies: list[tuple[int, int]] = []
-        for check in [c for c in pending if c.kind == "="]:
-            a, b = check.slots
-            if a not in bound or b not in bound:
-                if b in bound:
-                    a, b = b, a
-                if a in bound:
-                    copies.append((a, b))
-                    bound.add(b)
-                    pending.remove(check)
         free = tuple(i for i in variables if i not in bound)
         probes: list[tuple[int, ...]] = []
         probed: set[int] = set()
@@ -481,7 +458,6 @@ class RuleProgram:
             final_checks=tuple(pending),
             probes=tuple(probes),
             heads_at=heads_at,
-            copies=tuple(copies),
         )
 
     def _bucket_size(self, predicate: str, positions: tuple[int, ...]) -> float:
@@ -604,7 +580,6 @@ class Program(RuleProgram):
         cost: int | Atom,
         line: int | None = None,
         identity: int | None = None,
-        variants: bool = True,
     ) -> None:
         """An action's rule, split as lifted planners split Datalog rules when its body
         falls into parts that share no variable: each part becomes an auxiliary zero-cost
@@ -615,37 +590,64 @@ class Program(RuleProgram):
 
         The auxiliary head's hadd (hmax) cost is the sum (maximum) of its part's body
         costs, so the rule's instance costs what the unsplit rule's would, as long as no
-        fact can match atoms of two parts (the unsplit rule counts such a fact once).
-        Where atoms of a fluent predicate in two parts could match the same fact, the
-        split rule prices those instances dearer, never cheaper, and :meth:`_variants`
-        adds the rules that price them exactly (with ``variants`` False, the clause is
-        one of those). The relaxed plan rebuilds the full action instance from the parts'
+        fact can match atoms of two parts (the unsplit rule counts such a fact once):
+        a rule with atoms of a fluent predicate in two parts that could match the same fact
+        (no position that distinct constants, disjoint types or an inequality keeps
+        apart) is kept whole. The relaxed plan rebuilds the full action instance from the parts'
         supporters (:func:`.exploration.expand`)."""
-        if variants:
-            clauses = self._variants(clause, params)
-            if clauses is None or (
-                len(clauses) > FEW_VARIANTS and 2 * self._kept(clause, params, heads, cost) > 1
-            ):
-                # Too many ways for the parts to share facts, for too little projected
-                # away: kept whole (joined as one part, the branch and bound completes
-                # one instance per head; the parts would each be materialized).
-                self._add(clause, params, heads, action, operator, cost, line, identity)
-                return
-            for each in clauses:
-                self._add_split(
-                    each, params, heads, action, operator, cost, line, identity, variants=False
-                )
-            return
-        kinds, member, _ = self._partition(clause, params)
+        everything = params + clause.params
+        kinds = {p.name: p for p in everything}
+        parent = {name: name for name in kinds}
+
+        def root(name: str) -> str:
+            while parent[name] != name:
+                name = parent[name]
+            return name
+
+        def union(names: Iterable[str]) -> None:
+            names = [root(n) for n in names if n in kinds]
+            for name in names[1:]:
+                parent[name] = names[0]
+
         body = [a for a in clause.positive if a.predicate != "="]
+        for atom in clause.positive:
+            union(atom.args)
+        unequal = {
+            frozenset(a.args) for a in clause.negative if a.predicate == "=" and len(set(a.args)) == 2
+        }
+
+        def apart(first: Atom, second: Atom) -> bool:
+            for x, y in zip(first.args, second.args):
+                if x == y:
+                    continue
+                if frozenset((x, y)) in unequal:
+                    return True
+                domains = [
+                    set(self.objects_of(kinds[t].types)) if t in kinds else {t} for t in (x, y)
+                ]
+                if not domains[0] & domains[1]:
+                    return True
+            return False
+
+        for i, first in enumerate(body):
+            for second in body[i + 1:]:
+                if first.predicate != second.predicate or first.predicate in self.static:
+                    continue
+                ours = {root(t) for t in first.args if t in kinds}
+                if ours != {root(t) for t in second.args if t in kinds} and not apart(first, second):
+                    # The parts could share a fact, which the rule counts once: keep it whole
+                    # (joined as one part, they would enumerate the product of their matches).
+                    self._add(clause, params, heads, action, operator, cost, line, identity)
+                    return
         groups: dict[str | None, list[Atom]] = {}
         for atom in body:
             variables = [t for t in atom.args if t in kinds]
-            groups.setdefault(member[variables[0]] if variables else None, []).append(atom)
+            groups.setdefault(root(variables[0]) if variables else None, []).append(atom)
         if sum(1 for key in groups if key is not None) < 2 or not heads:
             # One part with variables (ground atoms match one fact each): nothing to gain.
             self._add(clause, params, heads, action, operator, cost, line, identity)
             return
+        member = {name: root(name) for name in kinds}
         # The variables every head's rule needs: the cost's and those of tests across parts.
         shared = set(cost.args) if isinstance(cost, Atom) else set()
         kept_tests: list[tuple[bool, Atom]] = []
@@ -662,17 +664,7 @@ class Program(RuleProgram):
                 if not fluent:
                     shared.update(atom.args)
         needed = shared | {t for a in heads for t in a.args}
-        slot = {p.name: i for i, p in enumerate(params + clause.params)}
-        if any(
-            len(atoms) > 1 and all(v in needed for v in kinds if member[v] == key)
-            for key, atoms in groups.items()
-            if key is not None
-        ):
-            # A part of several atoms that projects nothing away would be materialized
-            # whole, where the unsplit rule's branch and bound completes one instance per
-            # head: kept whole.
-            self._add(clause, params, heads, action, operator, cost, line, identity)
-            return
+        slot = {p.name: i for i, p in enumerate(everything)}
         # Per part: its variables, the auxiliary atom over those some head needs.
         made: list[tuple[list[str], Atom]] = []
         for number, (key, atoms) in enumerate(groups.items()):
@@ -726,131 +718,11 @@ class Program(RuleProgram):
                 hidden=frozenset(hidden), parts=parts,
             )  # fmt: skip
 
-    def _partition(
-        self, clause: Clause, params: tuple[Parameter, ...]
-    ) -> tuple[dict[str, Parameter], dict[str, str], Callable[[Atom, Atom], bool]]:
-        """The clause's variables by name, each one's part (a representative variable:
-        atoms and equalities connect variables), and ``apart(first, second)``: True when
-        no fact can match both atoms (a position where distinct constants, disjoint types
-        or an inequality keeps them apart)."""
-        kinds = {p.name: p for p in params + clause.params}
-        parent = {name: name for name in kinds}
-
-        def root(name: str) -> str:
-            while parent[name] != name:
-                name = parent[name]
-            return name
-
-        for atom in clause.positive:
-            names = [root(n) for n in atom.args if n in kinds]
-            for name in names[1:]:
-                parent[name] = names[0]
-        unequal = {
-            frozenset(a.args) for a in clause.negative if a.predicate == "=" and len(set(a.args)) == 2
-        }
-
-        def apart(first: Atom, second: Atom) -> bool:
-            for x, y in zip(first.args, second.args):
-                if x == y:
-                    continue
-                if frozenset((x, y)) in unequal:
-                    return True
-                domains = [
-                    set(self.objects_of(kinds[t].types)) if t in kinds else {t} for t in (x, y)
-                ]
-                if not domains[0] & domains[1]:
-                    return True
-            return False
-
-        return kinds, {name: root(name) for name in kinds}, apart
-
-    def _kept(
-        self, clause: Clause, params: tuple[Parameter, ...], heads: tuple[Atom, ...], cost: int | Atom
-    ) -> float:
-        """The share of the clause's variables its split would keep: those the heads,
-        the cost or an inequality across parts needs."""
-        kinds, member, _ = self._partition(clause, params)
-        needed = {t for atom in heads for t in atom.args}
-        needed.update(cost.args if isinstance(cost, Atom) else ())
-        for atom in clause.negative:
-            if atom.predicate == "=" and len({member[t] for t in atom.args if t in kinds}) > 1:
-                needed.update(atom.args)
-        return len(needed & kinds.keys()) / max(len(kinds), 1)
-
-    def _variants(self, clause: Clause, params: tuple[Parameter, ...]) -> list[Clause] | None:
-        """``clause`` and the variants that price exactly the instances in which two of
-        its parts share a fact: for two atoms of a fluent predicate in two parts that
-        could match one fact, the clause with their arguments equated, in which they are
-        one part's and the fact counts once; variants of variants for facts shared
-        several ways. Every instance is then priced exactly by some rule and under-priced
-        by none, so each head's minimum is the action's. None past :data:`MAX_VARIANTS`."""
-        seen = {frozenset[tuple[str, str]]()}
-        todo = [frozenset[tuple[str, str]]()]
-        clauses = []
-        while todo:
-            equal = todo.pop(0)
-            variant = _equated(clause, equal)
-            if variant is None:
-                continue  # two constants or an inequality equated: no instance
-            clauses.append(variant)
-            kinds, member, apart = self._partition(variant, params)
-            body = [a for a in variant.positive if a.predicate != "=" and a.predicate not in self.static]
-            for i, first in enumerate(body):
-                for second in body[i + 1:]:
-                    if first.predicate != second.predicate or apart(first, second):
-                        continue
-                    if {member[t] for t in first.args if t in kinds} == {
-                        member[t] for t in second.args if t in kinds
-                    }:
-                        continue  # one part's: it counts the fact once
-                    more = equal | {
-                        (min(x, y), max(x, y)) for x, y in zip(first.args, second.args) if x != y
-                    }
-                    if more not in seen:
-                        if len(seen) == MAX_VARIANTS:
-                            return None
-                        seen.add(more)
-                        todo.append(more)
-        return clauses
-
     def _action_cost(self, action: Action) -> int | Atom:
         """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
         if not self.task.problem.minimize_cost:
             return 1
         return 0 if action.cost is None else action.cost
-
-def _equated(clause: Clause, equal: frozenset[tuple[str, str]]) -> Clause | None:
-    """``clause`` with each class of the ``equal`` terms written as one representative
-    (its constant, else its first variable) in its atoms and inequalities, and an
-    equality binding each other variable of the class to it; None when two constants or
-    the two sides of an inequality are equated."""
-    if not equal:
-        return clause
-    parent: dict[str, str] = {}
-
-    def root(term: str) -> str:
-        while parent.get(term, term) != term:
-            term = parent[term]
-        return term
-
-    for x, y in sorted(equal):
-        x, y = root(x), root(y)
-        if x != y:
-            if not x.startswith("?") and not y.startswith("?"):
-                return None
-            first, second = sorted((x, y), key=lambda t: (t.startswith("?"), t))
-            parent[second] = first
-
-    def rename(atom: Atom) -> Atom:
-        return Atom(atom.predicate, tuple(root(t) for t in atom.args))
-
-    negative = tuple(rename(a) for a in clause.negative)
-    if any(a.predicate == "=" and a.args[0] == a.args[1] for a in negative):
-        return None
-    positive = tuple(rename(a) for a in clause.positive)
-    equalities = tuple(Atom("=", (term, root(term))) for term in sorted(parent))
-    return Clause(clause.params, positive + equalities, negative)
-
 
 def _maker(name: str, name_slot: int, terms: tuple[int, ...]) -> Callable[[list], GroundAtom]:
     if not terms:
