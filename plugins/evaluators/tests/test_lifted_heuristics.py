@@ -182,7 +182,7 @@ def test_each_rule_instance_is_found_once_and_only_if_it_improves(seed, monkeypa
     and from its first atom that fact matches, never twice (the values would not show
     it, the time would). Branch and bound: an instance is completed only if it makes one
     of its heads cheaper (organic synthesis has thousands of instances per head), unless
-    its cost depends on it; and, exploring until the goal is settled, only if it costs no
+    its cost depends on it or its last step binds a head; and, exploring until the goal is settled, only if it costs no
     more than every goal fact so far (nothing dearer is settled before the end)."""
     from strips_evaluators.lifted import exploration
 
@@ -198,8 +198,13 @@ def test_each_rule_instance_is_found_once_and_only_if_it_improves(seed, monkeypa
             before = [cost.get(make(slots), math.inf) for make in plan.rule.makers]
             value = fire(plan, slots, matched, body)
             found.append((plan.rule.number, tuple(slots)))
-            # (a cost per instance is only known complete: bounded by 0 before)
-            improving.append(any(value < old for old in before) or plan.rule.cost is None)
+            # (a cost per instance is only known complete: bounded by 0 before; heads the
+            # last step binds are compared by ``fire`` alone)
+            improving.append(
+                any(value < old for old in before)
+                or plan.rule.cost is None
+                or plan.heads_at >= len(plan.steps)
+            )
             improving[-1] &= body + (plan.rule.cost or 0) <= limit
             return value
 

@@ -103,9 +103,10 @@ class Exploration:
         # No fact dearer than every goal fact's cost so far is settled before the
         # exploration stops: instances above it are not completed.
         limit = max([cost_get(fact, inf) for fact in goal]) if goal else inf
+        unreached = sum(1 for fact in goal if fact not in cost)  # (limit is inf until 0)
 
         def fire(plan: Plan, slots: list[str], matched: list[GroundAtom], body: float) -> float:
-            nonlocal limit
+            nonlocal limit, unreached
             rule = plan.rule
             value = body + (rule.cost if rule.cost is not None else cost_of(rule, slots))
             support = None  # made once, for the first head it improves
@@ -123,8 +124,11 @@ class Exploration:
                         heappush(keys, value)
                     else:
                         bucket.append(head)
-                    if head in goal and value < limit:
-                        limit = max([cost_get(fact, inf) for fact in goal])
+                    if head in goal and (old is None or old == limit):
+                        # the dearest goal fact got cheaper, or the last one was reached
+                        unreached -= old is None
+                        if not unreached:
+                            limit = max([cost_get(fact, inf) for fact in goal])
             return value
 
         while keys:
@@ -268,17 +272,16 @@ def costed_join(
     steps = plan.steps
     final = functions.final
     free = functions.free
-    heads_at = plan.heads_at
+    # Heads bound only by the last step: ``fire`` compares them, a cap would again.
+    heads_at = plan.heads_at if plan.heads_at < len(plan.steps) else math.inf
     inf = math.inf
     cost_get = cost.get
     start = cost[fact]
     above = limit - base  # a body dearer than this is cut
     if start > above:
         return
-    if not steps and not free:  # one atom: nothing to join
-        if (final is None or final(slots)) and base + start < max(
-            [cost_get(make(slots), inf) for make in makers]
-        ):
+    if not steps and not free:  # one atom: nothing to join (``fire`` compares the heads)
+        if final is None or final(slots):
             fire(plan, slots, matched, start)
         return
     matchers = functions.steps
@@ -300,18 +303,18 @@ def costed_join(
             if not free:
                 if final is None or final(slots):
                     value = fire(plan, slots, matched, body)
-                    cap = min(cap, value)
+                    if value < cap:  # noqa: PLR1730 (min() is a call, here per instance)
+                        cap = value
             else:  # every assignment of the free slots over their types' objects
                 for values in product(*domains):
                     for slot, value in zip(free, values):
                         slots[slot] = value
                     if final is not None and not final(slots):
                         continue
-                    if heads_at > last:  # a head has a free slot: bound only now
-                        cap = max([cost_get(make(slots), inf) for make in makers])
                     if base + body < cap:
                         value = fire(plan, slots, matched, body)
-                        cap = min(cap, value)
+                        if value < cap and heads_at < last:  # else free slots vary heads
+                            cap = value
             return cap
         for later in probes[depth]:
             probe = steps[later]
