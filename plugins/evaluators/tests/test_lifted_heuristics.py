@@ -177,29 +177,119 @@ def test_ipc_first_tasks(domain):
 
 
 @pytest.mark.parametrize("seed", range(20))
-def test_each_rule_instance_is_found_once(seed, monkeypatch):
+def test_each_rule_instance_is_found_once_and_only_if_it_improves(seed, monkeypatch):
     """Semi-naive evaluation: an instance is joined when its last body fact is settled
     and from its first atom that fact matches, never twice (the values would not show
-    it, the time would)."""
-    import strips_evaluators.lifted.exploration as exploration
+    it, the time would). Branch and bound: an instance is completed only if it makes one
+    of its heads cheaper (organic synthesis has thousands of instances per head), unless
+    its cost depends on it or its last step binds a head; and, exploring until the goal is settled, only if it costs no
+    more than every goal fact so far (nothing dearer is settled before the end)."""
+    from strips_evaluators.lifted import exploration
 
     found: list[tuple] = []
-    join = exploration.join
+    improving: list[bool] = []
+    goal: list[tuple] = []
+    join = exploration.costed_join
 
-    def recording(program, plan, fact, lookup, emit, functions=None):
-        def record(plan, slots, matched):
+    def recording(program, plan, fact, lookup, cost, fire, functions, additive, limit):
+        assert limit == max([cost.get(g, math.inf) for g in goal], default=math.inf)
+
+        def record(plan, slots, matched, body):
+            before = [cost.get(make(slots), math.inf) for make in plan.rule.makers]
+            value = fire(plan, slots, matched, body)
             found.append((plan.rule.number, tuple(slots)))
-            emit(plan, slots, matched)
+            # (a cost per instance is only known complete: bounded by 0 before; heads the
+            # last step binds are compared by ``fire`` alone)
+            improving.append(
+                any(value < old for old in before)
+                or plan.rule.cost is None
+                or plan.heads_at >= len(plan.steps)
+            )
+            improving[-1] &= body + (plan.rule.cost or 0) <= limit
+            return value
 
-        join(program, plan, fact, lookup, record, functions)
+        join(program, plan, fact, lookup, cost, record, functions, additive, limit)
 
-    monkeypatch.setattr(exploration, "join", recording)
+    monkeypatch.setattr(exploration, "costed_join", recording)
     task = random_pddl_task(seed)
     program = Program(task)
     explorer = Exploration(program)
     grounded = ground(task, prune_irrelevant=False)
     changed = {atom.predicate for action in task.domain.actions for atom in action.changed_atoms()}
     for state in reachable(grounded, 10):
-        found.clear()
-        explorer.costs(lifted_state(grounded, state, changed), additive=True, until=())
-        assert len(found) == len(set(found))
+        for additive, until in [(True, ()), (False, ()), (True, None), (False, None)]:
+            found.clear()
+            goal[:] = program.fluent_goal if until is None else until
+            explorer.costs(lifted_state(grounded, state, changed), additive, until)
+            assert len(found) == len(set(found))
+            assert all(improving)
+
+
+SUBSTITUENTS_DOMAIN = """(define (domain substituents)
+  (:predicates (q ?x ?y) (r ?y ?z) (s ?x) (g ?x))
+  (:action a :parameters (?x ?y ?z)
+    :precondition (and (s ?x) (q ?x ?y) (r ?y ?z) (not (= ?y ?z)))
+    :effect (and (g ?x) (not (s ?x)) (not (q ?x ?y)) (not (r ?y ?z)))))"""
+
+
+def test_instances_sharing_heads_are_completed_once(tmp_path, monkeypatch):
+    """The action's heads name one of its three parameters: of the 4 x 4 x 3 instances
+    whose body holds, one per head is completed (the first; the others cost the same).
+    The ``s`` facts are settled last (the state's facts are queued in order), so each is
+    the trigger that binds its instances' head before ``q`` and ``r`` are joined."""
+    from strips_evaluators.lifted import exploration
+
+    objects = [f"o{i}" for i in range(4)]
+    init = [f"(s {x})" for x in objects]
+    init += [f"({name} {x} {y})" for name in "qr" for x in objects for y in objects]
+    (tmp_path / "domain.pddl").write_text(SUBSTITUENTS_DOMAIN)
+    (tmp_path / "problem.pddl").write_text(
+        f"(define (problem p) (:domain substituents) (:objects {' '.join(objects)})"
+        f" (:init {' '.join(init)}) (:goal (g o0)))"
+    )
+    task = load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl")
+    fired: list[tuple] = []
+    join = exploration.costed_join
+
+    def recording(program, plan, fact, lookup, cost, fire, functions, additive, limit):
+        def record(plan, slots, matched, body):
+            fired.append(tuple(slots))
+            return fire(plan, slots, matched, body)
+
+        join(program, plan, fact, lookup, cost, record, functions, additive, limit)
+
+    monkeypatch.setattr(exploration, "costed_join", recording)
+    explorer = Exploration(Program(task))
+    state = frozenset(tuple(atom[1:-1].split()) for atom in init)
+    for additive in (True, False):
+        fired.clear()
+        cost, _ = explorer.costs(state, additive, until=())
+        assert {fact: value for fact, value in cost.items() if fact[0] == "g"} == {
+            ("g", x): 1 for x in objects
+        }
+        assert len(fired) == len(objects)
+
+
+LIMIT_DOMAIN = """(define (domain limit)
+  (:predicates (a) (h) (t) (u) (g) (w))
+  (:action mk-h :precondition (a) :effect (and (h) (not (a))))
+  (:action mk-g :precondition (h) :effect (g))
+  (:action mk-t :precondition (a) :effect (t))
+  (:action mk-u :precondition (a) :effect (u))
+  (:action mk-w :precondition (and (t) (u)) :effect (w)))"""
+
+
+def test_instances_dearer_than_the_goal_are_not_completed(tmp_path):
+    """``h`` is settled first at cost 1, so ``g``, the goal, costs 2 from then on; ``u``
+    completes ``mk-w`` at 1 + 1 + 1 = 3: dearer than the goal, never settled before the
+    exploration stops, so not completed (``w`` gets no cost)."""
+    (tmp_path / "domain.pddl").write_text(LIMIT_DOMAIN)
+    (tmp_path / "problem.pddl").write_text(
+        "(define (problem p) (:domain limit) (:init (a)) (:goal (g)))"
+    )
+    explorer = Exploration(Program(load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl")))
+    cost, _ = explorer.costs(frozenset({("a",)}), additive=True)
+    assert cost[("g",)] == 2
+    assert ("w",) not in cost
+    cost, _ = explorer.costs(frozenset({("a",)}), additive=True, until=())
+    assert cost[("w",)] == 3

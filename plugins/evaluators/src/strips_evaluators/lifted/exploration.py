@@ -37,9 +37,11 @@ class Exploration:
         self.unconditional: list[tuple[int, list[GroundAtom], Supporter]] = []
         for plan in program.unconditional:
             join(program, plan, None, {}, self._collect)
-        #: The plans each predicate triggers, with their compiled tests.
+        #: The plans each predicate triggers, with their compiled tests (but for rules
+        #: without heads, such as an action whose adds are all conditional: they reach
+        #: nothing).
         self._triggers: dict[str, list[tuple[Plan, CompiledPlan]]] = {
-            predicate: [(plan, compiled(program, plan)) for plan in plans]
+            predicate: [(plan, compiled(program, plan)) for plan in plans if plan.rule.heads]
             for predicate, plans in program.triggers.items()
         }
 
@@ -97,18 +99,16 @@ class Exploration:
 
         cost_get = cost.get
         cost_of = program.cost_of
+        inf = math.inf
+        # No fact dearer than every goal fact's cost so far is settled before the
+        # exploration stops: instances above it are not completed.
+        limit = max([cost_get(fact, inf) for fact in goal]) if goal else inf
+        unreached = sum(1 for fact in goal if fact not in cost)  # (limit is inf until 0)
 
-        def fire(plan: Plan, slots: list[str], matched: list[GroundAtom]) -> None:
+        def fire(plan: Plan, slots: list[str], matched: list[GroundAtom], body: float) -> float:
+            nonlocal limit, unreached
             rule = plan.rule
-            value = rule.cost if rule.cost is not None else cost_of(rule, slots)
-            if len(matched) == 1:
-                value += cost[matched[0]]
-            elif matched:
-                body = set(matched) if rule.repeated_predicates else matched
-                if additive:
-                    value += sum([cost[f] for f in body])
-                else:
-                    value += max([cost[f] for f in body])
+            value = body + (rule.cost if rule.cost is not None else cost_of(rule, slots))
             support = None  # made once, for the first head it improves
             for make in rule.makers:
                 head = make(slots)
@@ -124,6 +124,12 @@ class Exploration:
                         heappush(keys, value)
                     else:
                         bucket.append(head)
+                    if head in goal and (old is None or old == limit):
+                        # the dearest goal fact got cheaper, or the last one was reached
+                        unreached -= old is None
+                        if not unreached:
+                            limit = max([cost_get(fact, inf) for fact in goal])
+            return value
 
         while keys:
             value = keys[0]
@@ -147,7 +153,7 @@ class Exploration:
                     else:
                         found.append(fact)
                 for plan, functions in triggers.get(predicate, ()):
-                    join(program, plan, fact, lookup, fire, functions)
+                    costed_join(program, plan, fact, lookup, cost, fire, functions, additive, limit)
             del buckets[value]
             heappop(keys)
         return cost, supporter
@@ -230,6 +236,128 @@ def join(
                     extend(depth + 1)
 
     extend(0)
+
+
+def costed_join(
+    program: RuleProgram,
+    plan: Plan,
+    fact: GroundAtom,
+    lookup: dict[tuple[str, tuple[int, ...]], Index],
+    cost: dict[GroundAtom, float],
+    fire: Callable[[Plan, list, list[GroundAtom], float], float],
+    functions: CompiledPlan,
+    additive: bool,
+    limit: float = math.inf,
+) -> None:
+    """The completions of ``plan`` with its trigger bound to ``fact`` that improve the
+    cost of one of their heads: ``fire(plan, slots, matched, body)`` with ``body`` the
+    sum (``additive``) or maximum of the costs of the distinct fluent facts matched, which
+    returns the instance's value. The join is :func:`join`'s, with branch and bound: a
+    partial binding's body cost only grows as it is completed, so once its heads are bound
+    (``plan.heads_at``) a branch whose cost plus the rule's constant cost reaches the
+    dearest head's cost so far cannot improve any head, and is cut. That keeps the
+    values exact, and only the cheapest of the instances that share heads is completed
+    (organic synthesis: thousands of instances per head, one relabelling of the
+    molecule's substituents each). Branches whose value would exceed ``limit`` are cut
+    too."""
+    rule = plan.rule
+    slots: list = list(rule.template)
+    for slot, value in functions.preset:
+        slots[slot] = value
+    if not functions.trigger(fact, slots):  # type: ignore[misc]
+        return
+    matched = [fact]
+    base = rule.cost or 0  # a cost per instance is at least 0
+    makers = rule.makers
+    steps = plan.steps
+    final = functions.final
+    free = functions.free
+    # Heads bound only by the last step: ``fire`` compares them, a cap would again.
+    heads_at = plan.heads_at if plan.heads_at < len(plan.steps) else math.inf
+    inf = math.inf
+    cost_get = cost.get
+    start = cost[fact]
+    above = limit - base  # a body dearer than this is cut
+    if start > above:
+        return
+    if not steps and not free:  # one atom: nothing to join (``fire`` compares the heads)
+        if final is None or final(slots):
+            fire(plan, slots, matched, start)
+        return
+    matchers = functions.steps
+    last = len(steps)
+    static_indexes = program.static_indexes
+    probes = plan.probes
+    repeated = rule.repeated_predicates
+    domains = functions.domains
+
+    def extend(depth: int, body: float, cap: float) -> float:
+        """Completes the binding of ``steps[:depth]`` at cost ``body``; returns ``cap``,
+        the cost at or above which a completion improves no head, as the completions
+        left it (meaningful once the heads are bound)."""
+        if depth == heads_at:
+            cap = max([cost_get(make(slots), inf) for make in makers])
+            if base + body >= cap:
+                return cap
+        if depth == last:
+            if not free:
+                if final is None or final(slots):
+                    value = fire(plan, slots, matched, body)
+                    if value < cap:  # noqa: PLR1730 (min() is a call, here per instance)
+                        cap = value
+            else:  # every assignment of the free slots over their types' objects
+                for values in product(*domains):
+                    for slot, value in zip(free, values):
+                        slots[slot] = value
+                    if final is not None and not final(slots):
+                        continue
+                    if base + body < cap:
+                        value = fire(plan, slots, matched, body)
+                        if value < cap and heads_at < last:  # else free slots vary heads
+                            cap = value
+            return cap
+        for later in probes[depth]:
+            probe = steps[later]
+            index = lookup.get((probe.predicate, probe.positions))
+            if not index or tuple([slots[s] for s in probe.key]) not in index:
+                return cap
+        step = steps[depth]
+        where = (step.predicate, step.positions)
+        index = lookup.get(where) if step.fluent else static_indexes[where]
+        if not index:
+            return cap
+        candidates = index.get(tuple([slots[s] for s in step.key]))
+        if not candidates:
+            return cap
+        match = matchers[depth]
+        keep = depth >= heads_at  # the children's cap holds for this binding's heads too
+        if step.fluent:
+            skip = fact if step.before_trigger else None
+            for candidate in candidates:
+                if candidate is skip or candidate == skip:
+                    continue
+                if repeated and candidate in matched:
+                    more = body  # the instance's body is a set: counted once
+                elif additive:
+                    more = body + cost[candidate]
+                else:
+                    more = max(body, cost[candidate])
+                if more > above or base + more >= cap or not match(candidate, slots):
+                    continue
+                matched.append(candidate)
+                found = extend(depth + 1, more, cap)
+                matched.pop()
+                if keep:
+                    cap = found
+        else:
+            for candidate in candidates:
+                if match(candidate, slots):
+                    found = extend(depth + 1, body, cap)
+                    if keep:
+                        cap = found
+        return cap
+
+    extend(0, start, inf)
 
 
 def relaxed_plan(

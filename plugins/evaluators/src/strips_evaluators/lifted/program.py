@@ -116,7 +116,9 @@ class Plan(Record):
     step ``d``: if one of them has no fact under its key, no completion exists and step
     ``d``'s candidates are not enumerated (a semi-join filter: a relaxed exploration
     settles fluent facts gradually, and a static relation joined before an empty fluent
-    one would be enumerated for nothing)."""
+    one would be enumerated for nothing). ``heads_at`` is the number of steps after which
+    every slot of the rule's heads is bound (``len(steps) + 1`` when a free slot is in a
+    head): from there on a costed join knows what the completions would improve."""
 
     rule: Rule
     trigger: Step | None
@@ -125,8 +127,11 @@ class Plan(Record):
     domains: tuple[tuple[str, ...], ...]
     final_checks: tuple[Check, ...]
     probes: tuple[tuple[int, ...], ...]
+    heads_at: int
 
-    __slots__ = ("rule", "trigger", "steps", "free", "domains", "final_checks", "probes")
+    __slots__ = (
+        "rule", "trigger", "steps", "free", "domains", "final_checks", "probes", "heads_at",
+    )  # fmt: skip
 
     def __init__(
         self,
@@ -137,6 +142,7 @@ class Plan(Record):
         domains: tuple[tuple[str, ...], ...],
         final_checks: tuple[Check, ...],
         probes: tuple[tuple[int, ...], ...],
+        heads_at: int,
     ) -> None:
         self.rule = rule
         self.trigger = trigger
@@ -145,6 +151,7 @@ class Plan(Record):
         self.domains = domains
         self.final_checks = final_checks
         self.probes = probes
+        self.heads_at = heads_at
 
 
 class Rule(Record):
@@ -436,6 +443,12 @@ class RuleProgram:
             ]
             probed.update(ready)
             probes.append(tuple(ready))
+        wanted = {slot for _, terms in rule.heads for slot in terms if slot < len(domains)}
+        bound_before.append(bound)
+        heads_at = next(
+            (depth for depth, known in enumerate(bound_before) if wanted <= known),
+            len(steps) + 1,
+        )
         return Plan(
             rule=rule,
             trigger=first,
@@ -444,6 +457,7 @@ class RuleProgram:
             domains=tuple(domains[i] for i in free),
             final_checks=tuple(pending),
             probes=tuple(probes),
+            heads_at=heads_at,
         )
 
     def _bucket_size(self, predicate: str, positions: tuple[int, ...]) -> float:
