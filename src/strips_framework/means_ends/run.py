@@ -201,7 +201,7 @@ class MeansEndsRun:
         node.pending = [
             found for found in relevant
             if found.operator not in on_goal_list
-            and looping.isdisjoint(atoms_of(found.operator.precondition()))
+            and (not looping or looping.isdisjoint(atoms_of(found.operator.precondition())))
         ]
         if node.pending:
             self._push(node)
