@@ -217,7 +217,7 @@ def main() -> None:
                 if setup > args.budget:
                     over.add(search)
                 print(
-                    f"| {name} | {size} | {search} | {setup:.2f} | {first * 1000:.1f} | {per * 1000:.2f} | "
+                    f"| {name} | {size} | {search} | {setup:.2f} | {first * 1000:.1f} | {per * 1000:.3f} | "
                     f"{size_bytes:.0f} | {expanded} | {branching:.0f} | {per * 1e6 / max(branching, 1):.2f} |",
                     flush=True,
                 )

@@ -119,25 +119,34 @@ cdef class _Alternation:
 
 def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
     """Lazy greedy search over ``run`` with ``evaluate(state) -> (h, preferred)``; the
-    number of a goal state, or None when out of states."""
+    number of a goal state, or None when out of states.
+
+    A full-list entry is a cursor: the expanded state's number and the position (in the
+    successor generator's order) of its next applicable operator; popped, it gives that
+    operator and stays at the head of its bucket with the next position while there is
+    one. A preferred-list entry is the state's number and the operator."""
     cdef _Alternation frontier = _Alternation(boost)
+    cdef _Queue every = frontier.every
     cdef _Bucket bucket
-    cdef long long width, base, number, parent, op
+    cdef long long width, number, parent, op, position, following
     cdef entry_t entry
-    cdef Py_ssize_t i, count
+    cdef bint packed, merges
     task, space, budget = run.task, run.space, run.budget
-    applicable, successor = space.successors.applicable, space.successor
-    find, state_of, add, goal = space.number, space.state, space.add, task.goal_mask
+    successors = space.successors
+    following_of, ordered, order = successors.next_applicable, successors.ordered, successors.order
+    child, stored, add, is_goal = space.child, space.stored, space.add, space.is_goal
+    successor, state_of, find, goal = space.successor, space.state, space.number, task.goal_mask
+    packed, merges = space.packed, space.merges
     width = max(len(task.operators), 1)
     best_h = math.inf
-    parent, op, state = -1, -1, task.init
+    number = add(task.init, -1, -1)
+    state = task.init
     while True:
-        number = add(state, parent, op)
         h, preferred = evaluate(state)
         run.evaluated += 1
         if h == math.inf:
             run.dead_ends += 1
-        elif state & goal == goal:
+        elif (is_goal(state) if packed else state & goal == goal):
             return number
         else:
             budget.check(run.expanded)
@@ -146,32 +155,47 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
                 if best_h != math.inf:  # the initial state's h only sets the mark
                     frontier.reward_progress()
                 best_h = h
-            successors = applicable(state)
-            count = len(successors)
-            run.generated += count
-            base = number * width
-            if count:
-                bucket = frontier.every.bucket(h)
-                for i in range(count):
-                    bucket.append(base + <long long> successors[i])
-                frontier.every.size += count
+            position = following_of(stored(number), 0)
+            if position >= 0:
+                every.push(h, number * width + position)
                 if use_preferred and preferred:
-                    marked = set(preferred)
-                    picked = [op for op in successors if op in marked]
+                    picked = ordered(state, preferred)
                     if picked:
                         bucket = frontier.chosen.bucket(h)
                         for op in picked:
-                            bucket.append(base + op)
+                            bucket.append(number * width + op)
                         frontier.chosen.size += len(picked)
         while True:
             if frontier.empty():
                 return None
-            entry = frontier.pop()
-            parent = entry // width
-            op = entry - parent * width
-            state = successor(state_of(parent), op)
-            if find(state) is None:
-                break
+            if frontier.chosen.size and (frontier.turns_chosen < frontier.turns_every or not every.size):
+                frontier.turns_chosen += 1
+                entry = frontier.chosen.pop()
+                parent = entry // width
+                op = entry - parent * width
+            else:
+                frontier.turns_every += 1
+                bucket = every.buckets[every.keys[0]]
+                entry = bucket.data[bucket.head]
+                parent = entry // width
+                position = entry - parent * width
+                op = order[position]
+                following = following_of(stored(parent), position + 1)
+                if following >= 0:
+                    bucket.data[bucket.head] = parent * width + following
+                else:
+                    every.pop()
+            run.generated += 1
+            if merges:
+                state = child(parent, op)
+                if state is None:
+                    continue
+            else:  # space.child's other way, without a call in between
+                state = successor(state_of(parent), op)
+                if find(state) is not None:
+                    continue
+            number = add(state, parent, op)
+            break
 
 
 def eager(run, estimate, preferred_of, key, bint reopen, long long boost):

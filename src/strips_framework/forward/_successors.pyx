@@ -20,11 +20,21 @@ A successor (:meth:`SuccessorGenerator.apply`, for operators without conditional
 effects) is made the same way: the state's digits copied, the operator's deletes
 cleared and its adds set, one bit each, instead of three operations with masks as long
 as the state.
+
+:meth:`SuccessorGenerator.next_applicable` takes a state's applicable operators one at
+a time, from a position in that order, and takes the state as its packing too (the
+sorted numbers of its true facts, :mod:`~strips_framework.forward.packing`): then it
+walks the true facts listed there and tests a precondition by binary search, so it
+costs what the state holds, not what the task has; :meth:`SuccessorGenerator.apply_packed`
+makes a successor's packing from its parent's by a merge with the operator's sorted
+deletes and adds.
 """
 
 from array import array
 
+from cpython.bytes cimport PyBytes_AS_STRING, PyBytes_FromStringAndSize
 from libc.stdint cimport uint32_t
+from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy
 
 from strips_framework.forward.digits cimport (
@@ -44,6 +54,9 @@ cdef class SuccessorGenerator:
     # unkeyed entries come first, before bucket_start[0]). Per entry: the operator and
     # its positive and negative preconditions (compressed rows).
     cdef int[::1] bucket_start, entry_op, pre_start, pre, neg_start, neg
+    # Per entry: its key fact (-1 for the unkeyed ones); per operator: its entry.
+    cdef int[::1] entry_key, position
+    cdef readonly tuple order
     # Per operator number: its unconditional adds and deletes (compressed rows).
     cdef int[::1] add_start, adds, delete_start, deletes
     cdef readonly object delete, add, effects
@@ -67,13 +80,22 @@ cdef class SuccessorGenerator:
             neg.extend(operators[index].pre_neg)
             neg_starts.append(len(neg))
         self.bucket_start, self.entry_op = array("i", starts), array("i", entries or [0])
+        self.order = tuple(entries)
+        keys = [-1] * self.num_unkeyed
+        for fact in range(len(starts) - 1):
+            keys.extend([fact] * (starts[fact + 1] - starts[fact]))
+        self.entry_key = array("i", keys or [0])
+        place = [0] * len(operators)
+        for index, op in enumerate(entries):
+            place[op] = index
+        self.position = array("i", place or [0])
         self.pre_start, self.pre = array("i", pre_starts), array("i", pre or [0])
         self.neg_start, self.neg = array("i", neg_starts), array("i", neg or [0])
         add_starts, adds, delete_starts, deletes = [0], [], [0], []
-        for op in operators:
-            adds.extend(op.add)
+        for op in operators:  # sorted, for apply_packed's merge
+            adds.extend(sorted(set(op.add)))
             add_starts.append(len(adds))
-            deletes.extend(op.delete)
+            deletes.extend(sorted(set(op.delete)))
             delete_starts.append(len(deletes))
         self.add_start, self.adds = array("i", add_starts), array("i", adds or [0])
         self.delete_start, self.deletes = array("i", delete_starts), array("i", deletes or [0])
@@ -88,6 +110,150 @@ cdef class SuccessorGenerator:
             if _holds(digits, size, self.neg[i]):
                 return False
         return True
+
+    cdef inline bint _applies_packed(self, int entry, const uint32_t* facts, Py_ssize_t count):
+        cdef int i
+        for i in range(self.pre_start[entry], self.pre_start[entry + 1]):
+            if not _listed(facts, count, self.pre[i]):
+                return False
+        for i in range(self.neg_start[entry], self.neg_start[entry + 1]):
+            if _listed(facts, count, self.neg[i]):
+                return False
+        return True
+
+    def next_applicable(self, state, Py_ssize_t position):
+        """The position (in :attr:`order`) of the first operator applicable in ``state``
+        (an int, or its packing as bytes) at ``position`` or after, or -1 if none."""
+        if isinstance(state, bytes):
+            return self._next_packed(state, position)
+        if not isinstance(state, int):
+            raise TypeError("a state is an int or its packing")
+        cdef Py_ssize_t size, i, entries = len(self.order)
+        cdef const uint32_t* digits = strips_digits(state, &size)
+        if size < 0 or size > self.num_digits:
+            raise ValueError(f"not a state of {self.num_facts} facts")
+        if position < 0:
+            position = 0
+        while position < self.num_unkeyed:
+            if self._applies(position, digits, size):
+                return position
+            position += 1
+        if position >= entries:
+            return -1
+        cdef int fact = self.entry_key[position], entry
+        if _holds(digits, size, fact):
+            for entry in range(position, self.bucket_start[fact + 1]):
+                if self._applies(entry, digits, size):
+                    return entry
+        # The facts after ``fact``: the rest of its digit, then the digits above.
+        cdef Py_ssize_t at = (fact + 1) // STRIPS_DIGIT_BITS
+        cdef int shift = (fact + 1) - at * STRIPS_DIGIT_BITS
+        cdef uint32_t digit
+        for i in range(at, size):
+            digit = digits[i]
+            if i == at:
+                digit &= ~((<uint32_t> 1 << shift) - 1)
+            while digit:
+                fact = i * STRIPS_DIGIT_BITS + __builtin_ctz(digit)
+                digit &= digit - 1
+                for entry in range(self.bucket_start[fact], self.bucket_start[fact + 1]):
+                    if self._applies(entry, digits, size):
+                        return entry
+        return -1
+
+    cdef Py_ssize_t _next_packed(self, bytes state, Py_ssize_t position) except -2:
+        cdef Py_ssize_t count = len(state) // 4, entries = len(self.order), low, high, middle
+        cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(state)
+        if count and facts[count - 1] >= <uint32_t> self.num_facts:
+            raise ValueError(f"not a state of {self.num_facts} facts")
+        if position < 0:
+            position = 0
+        while position < self.num_unkeyed:
+            if self._applies_packed(position, facts, count):
+                return position
+            position += 1
+        if position >= entries:
+            return -1
+        cdef int fact = self.entry_key[position], entry
+        low, high = 0, count  # the first true fact at or after ``fact``
+        while low < high:
+            middle = (low + high) // 2
+            if facts[middle] < <uint32_t> fact:
+                low = middle + 1
+            else:
+                high = middle
+        if low < count and facts[low] == <uint32_t> fact:
+            for entry in range(position, self.bucket_start[fact + 1]):
+                if self._applies_packed(entry, facts, count):
+                    return entry
+            low += 1
+        for middle in range(low, count):
+            fact = facts[middle]
+            for entry in range(self.bucket_start[fact], self.bucket_start[fact + 1]):
+                if self._applies_packed(entry, facts, count):
+                    return entry
+        return -1
+
+    def ordered(self, state, operators):
+        """Those of ``operators`` applicable in ``state``, once each, in the order
+        :meth:`applicable` lists them."""
+        if not isinstance(state, int):
+            raise TypeError("a state is an int")
+        cdef Py_ssize_t size
+        cdef const uint32_t* digits = strips_digits(state, &size)
+        if size < 0 or size > self.num_digits:
+            raise ValueError(f"not a state of {self.num_facts} facts")
+        cdef int op, entry
+        cdef set found = set()
+        for op in operators:
+            if op < 0 or op >= len(self.order):
+                raise IndexError(f"no operator {op}")
+            entry = self.position[op]
+            if self._applies(entry, digits, size):
+                found.add(entry)
+        return [self.entry_op[entry] for entry in sorted(found)]
+
+    def apply_packed(self, bytes packed, int operator):
+        """The packing of what :meth:`apply` makes of the state packed as ``packed``:
+        its facts without the operator's deletes, with its adds, in order. The runs of
+        facts between two changes are copied whole (a change's place found by binary
+        search), so a successor costs a copy of its parent's packing."""
+        if operator < 0 or operator >= len(self.add_start) - 1:
+            raise IndexError(f"no operator {operator}")
+        cdef Py_ssize_t count = len(packed) // 4, made = 0, read = 0, at
+        cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(packed)
+        cdef int add = self.add_start[operator], add_end = self.add_start[operator + 1]
+        cdef int cut = self.delete_start[operator], cut_end = self.delete_start[operator + 1]
+        cdef uint32_t* out = <uint32_t*> malloc((count + add_end - add + 1) * sizeof(uint32_t))
+        if out == NULL:
+            raise MemoryError()
+        cdef uint32_t fact
+        cdef bint adding
+        try:
+            # The changes in ascending order: at each, copy the run of facts below it,
+            # then write the added fact or skip the deleted one (an add wins).
+            while add < add_end or cut < cut_end:
+                adding = cut == cut_end or (add < add_end and self.adds[add] <= self.deletes[cut])
+                fact = self.adds[add] if adding else self.deletes[cut]
+                at = _first_at_or_after(facts, read, count, fact)
+                memcpy(out + made, facts + read, (at - read) * sizeof(uint32_t))
+                made += at - read
+                read = at
+                if read < count and facts[read] == fact:
+                    read += 1  # present: dropped if deleted, written again if added
+                if adding:
+                    out[made] = fact
+                    made += 1
+                    if cut < cut_end and self.deletes[cut] == fact:
+                        cut += 1
+                    add += 1
+                else:
+                    cut += 1
+            memcpy(out + made, facts + read, (count - read) * sizeof(uint32_t))
+            made += count - read
+            return PyBytes_FromStringAndSize(<char*> out, made * sizeof(uint32_t))
+        finally:
+            free(out)
 
     def applicable(self, state):
         """The numbers of the operators applicable in ``state``, in the reference's order."""
@@ -146,6 +312,34 @@ cdef class SuccessorGenerator:
             top -= 1
         strips_set_size(child, top)
         return child
+
+
+cdef inline Py_ssize_t _first_at_or_after(
+    const uint32_t* facts, Py_ssize_t low, Py_ssize_t high, uint32_t fact
+):
+    """The first place in ``facts[low:high]`` (sorted) holding ``fact`` or more."""
+    cdef Py_ssize_t middle
+    while low < high:
+        middle = (low + high) // 2
+        if facts[middle] < fact:
+            low = middle + 1
+        else:
+            high = middle
+    return low
+
+
+cdef inline bint _listed(const uint32_t* facts, Py_ssize_t count, int fact):
+    """Whether ``fact`` is among the ``count`` sorted ``facts`` (binary search)."""
+    cdef Py_ssize_t low = 0, high = count, middle
+    while low < high:
+        middle = (low + high) // 2
+        if facts[middle] < <uint32_t> fact:
+            low = middle + 1
+        elif facts[middle] == <uint32_t> fact:
+            return True
+        else:
+            high = middle
+    return False
 
 
 cdef inline bint _holds(const uint32_t* digits, Py_ssize_t size, int fact):

@@ -13,16 +13,21 @@ These functions are the pure-Python reference; ``_packing.pyx`` (built by ``pip
 install`` with Cython) is the compiled one, which reads and makes the int's digits in
 place, and :func:`packing` picks it as
 :func:`~strips_framework.compiled.compiled_module` says.
+
+:func:`held_counter` counts which of a few facts (a goal) a state holds: with masks,
+``(mask & state).bit_count()`` costs as much as the mask is long, i.e. up to the
+highest of those facts' numbers (20 µs a state at 800,000 facts); compiled, it reads
+one digit per fact.
 """
 
 from __future__ import annotations
 
 from array import array
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from types import ModuleType
 
 from strips_framework.compiled import compiled_module
-from strips_framework.grounding.task import facts_in
+from strips_framework.grounding.task import facts_in, mask_of
 
 
 def pack(state: int) -> bytes:
@@ -48,3 +53,16 @@ def packing(compiled: bool | None = None) -> tuple[Callable[[int], bytes], Calla
     if module is None:
         return pack, unpack
     return module.pack, module.unpack
+
+
+def held_counter(facts: Sequence[int], compiled: bool | None = None) -> Callable[[int], int]:
+    """A function of a state: how many of ``facts`` hold in it (compiled when built)."""
+    module: ModuleType | None = compiled_module("strips_framework.forward._packing", compiled)
+    if module is not None:
+        return module.HeldCounter(facts)  # type: ignore[no-any-return]
+    mask = mask_of(tuple(facts))
+
+    def held(state: int) -> int:
+        return (mask & state).bit_count()
+
+    return held

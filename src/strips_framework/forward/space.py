@@ -14,6 +14,13 @@ search stored or asked for are kept unpacked. A bitset's size, hash and comparis
 as much as the task has facts; a packing's, as much as the state has true facts (blocks
 with 900 blocks: 108 KB a state as bitsets, 4 KB packed). Either way the searches see
 the same states in the same order: only their storage differs.
+
+:meth:`StateSpace.child` is what lazy search asks of a stored state: its successor by an
+operator, unless reached before. In a packed space the successor's packing is made from
+its parent's (:meth:`~.successors.SuccessorGenerator.apply_packed`, a merge as long as
+the state) and looked up first, so a duplicate costs no bitset, and the goal test reads
+only the goal's facts (:func:`~.packing.held_counter`): what a successor costs then
+grows with the facts that hold, apart from writing a new state's bitset.
 """
 
 from __future__ import annotations
@@ -23,7 +30,7 @@ from array import array
 from collections import OrderedDict
 from collections.abc import Callable
 
-from strips_framework.forward.packing import packing
+from strips_framework.forward.packing import held_counter, packing
 from strips_framework.forward.successors import successor_generator
 from strips_framework.grounding.task import GroundTask
 
@@ -63,6 +70,14 @@ class StateSpace:
             self.derive = AxiomEvaluator(task).evaluate
         self.state: Callable[[int], int]
         self.number: Callable[[int], int | None]
+        #: A state as stored (by number): its bitset, or its packing in a packed space;
+        #: the successor generator takes either.
+        self.stored: Callable[[int], int | bytes] = self._stored.__getitem__
+        #: Whether a state holds the goal's facts.
+        self.is_goal: Callable[[int], bool] = task.is_goal
+        #: Whether :meth:`child` makes a successor's packing from its parent's (a packed
+        #: space without conditional effects or axioms, which need the whole state).
+        self.merges = self.packed and self.successors.effects is None and self.derive is None
         if self.packed:
             self._pack, self._unpack = packing()
             self._recent: OrderedDict[int, int] = OrderedDict()
@@ -70,6 +85,9 @@ class StateSpace:
             #: number and then adds it: one packing for both).
             self._last: tuple[int, bytes] = (0, self._pack(0))
             self.state, self.number = self._packed_state, self._packed_number
+            goal = sorted(set(task.goal))
+            held, goals = held_counter(goal), len(goal)
+            self.is_goal = lambda state: held(state) == goals
         else:
             # A state is its own key: the list's and the dict's own methods, no call
             # in between on the searches' hottest path.
@@ -120,13 +138,26 @@ class StateSpace:
             result = (state ^ (state & delete)) | add
         return self.derive(result) if self.derive is not None else result
 
+    def child(self, parent: int, operator: int) -> int | None:
+        """The state ``operator`` makes of state number ``parent``, or None when it was
+        reached before."""
+        if not self.merges:
+            state = self.successor(self.state(parent), operator)
+            return state if self.number(state) is None else None
+        packed = self.successors.apply_packed(self._stored[parent], operator)  # type: ignore[arg-type]
+        if packed in self._keys:
+            return None
+        state = self._unpack(packed)
+        self._last = (state, packed)
+        return state
+
     def add(self, state: int, parent: int, operator: int) -> int:
         """Number a new state reached from state number ``parent`` by ``operator``."""
         number = len(self._stored)
         key = self._key(state)
         self._keys[key] = number
         self._stored.append(key)
-        if self.packed:
+        if self.packed and not self.merges:  # lazy search asks for their parents' states
             self._remember(number, state)
         self.parents.append(parent)
         self.operators.append(operator)

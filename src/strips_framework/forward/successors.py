@@ -6,6 +6,15 @@ other operators need, so that the buckets stay small. A state looks only into th
 buckets of the key facts it holds (walking its set bits, lowest first) and tests the
 full preconditions of the operators there. Operators without positive preconditions are
 tested in every state. The order is deterministic: by key fact, then operator number.
+An operator's place in that order (its *position*: the unkeyed operators first, then the
+buckets by key fact) lets a search take a state's applicable operators one at a time
+(:meth:`SuccessorGenerator.next_applicable`), resuming where it left off, instead of
+listing them all: lazy search takes a few of a large state's thousands.
+
+A state is given as an int bitset, or, where the state space stores it packed, as its
+packing (the sorted numbers of its true facts, :mod:`.packing`): the walk over a
+packing and the successor of a packing (:meth:`SuccessorGenerator.apply_packed`) cost
+what the state holds and the operator changes, not what the task has.
 
 This class is the pure-Python reference. :func:`successor_generator` gives the compiled
 one (``_successors.pyx``, built by ``pip install`` with Cython) when it is built and
@@ -16,11 +25,12 @@ arrays, with the same operators in the same order, so searches expand the same s
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Protocol
 
 from strips_framework.allocation import collection_paused
 from strips_framework.compiled import compiled_module
+from strips_framework.forward.packing import pack, unpack
 from strips_framework.grounding.task import GroundOperator, GroundTask, facts_in
 
 
@@ -30,10 +40,18 @@ class Successors(Protocol):
     delete: Mapping[int, int]
     add: Mapping[int, int]
     effects: Mapping[int, tuple[tuple[int, int, int, int], ...]] | None
+    #: The operators in the order :meth:`applicable` lists them, by position.
+    order: Sequence[int]
 
     def applicable(self, state: int) -> list[int]: ...
 
+    def next_applicable(self, state: int | bytes, position: int) -> int: ...
+
+    def ordered(self, state: int, operators: Iterable[int]) -> list[int]: ...
+
     def apply(self, state: int, operator: int) -> int: ...
+
+    def apply_packed(self, packed: bytes, operator: int) -> bytes: ...
 
 
 @collection_paused()
@@ -78,6 +96,9 @@ class SuccessorGenerator:
             key: tuple(entries) for key, entries in buckets.items()
         }
         self.unkeyed = tuple(unkeyed)
+        self.order = self.unkeyed + tuple(op for key in sorted(buckets) for op in buckets[key])
+        #: Per operator number, its position in :attr:`order`.
+        self.position = {op: place for place, op in enumerate(self.order)}
         self._operators = operators
         #: Per operator: the masks of its unconditional deletes and adds.
         self.delete = _OperatorMasks(lambda op: op.delete_mask, operators)
@@ -98,6 +119,25 @@ class SuccessorGenerator:
                 if operators[i].applicable(state):
                     found.append(i)
         return found
+
+    def next_applicable(self, state: int | bytes, position: int) -> int:
+        """The position (in :attr:`order`) of the first operator applicable in ``state``
+        (a bitset or its packing) at ``position`` or after, or -1 if none."""
+        if isinstance(state, bytes):
+            state = unpack(state)
+        places = [self.position[op] for op in self.applicable(state)]
+        return next((place for place in places if place >= position), -1)
+
+    def ordered(self, state: int, operators: Iterable[int]) -> list[int]:
+        """Those of ``operators`` applicable in ``state``, once each, in the order
+        :meth:`applicable` lists them (a heuristic's preferred operators, queued as a
+        search would queue them from the full list)."""
+        found = {op for op in operators if self._operators[op].applicable(state)}
+        return sorted(found, key=self.position.__getitem__)
+
+    def apply_packed(self, packed: bytes, operator: int) -> bytes:
+        """The packing of what :meth:`apply` makes of the state packed as ``packed``."""
+        return pack(self.apply(unpack(packed), operator))
 
     def apply(self, state: int, operator: int) -> int:
         """The state ``operator`` makes of ``state`` without its conditional effects

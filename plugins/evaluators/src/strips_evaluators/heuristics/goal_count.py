@@ -2,33 +2,38 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import ClassVar
 
+from strips_framework.forward.packing import held_counter
 from strips_framework.grounding.task import GroundTask
 from strips_framework.options import Configurable
 from strips_framework.records import Record
 
 
 class GoalCountEstimator(Record):
-    """Counts the goal facts a state holds and subtracts them from the goal's size:
-    ``goal_mask & state`` is as long as the goal mask, while the count of what is
-    missing, ``goal_mask & ~state``, complements the whole state first (a negative
-    int), a cost that grows with the task's facts, not with its goal."""
+    """Counts the goal facts a state holds and subtracts them from the goal's size. The
+    count reads the goal's facts one by one (:func:`held_counter`, compiled): a mask
+    operation, ``goal_mask & state``, costs as much as the mask is long, up to the
+    highest goal fact's number (20 µs a state at 800,000 facts for a goal of three), and
+    the count of what is missing, ``goal_mask & ~state``, complements the whole state
+    first (a negative int)."""
 
-    goal_mask: int
+    goal: tuple[int, ...]
 
-    FIELDS = ("goal_mask",)
-    __slots__ = (*FIELDS, "_goals")
+    FIELDS = ("goal",)
+    __slots__ = (*FIELDS, "_goals", "_held")
 
-    def __init__(self, goal_mask: int) -> None:
-        self.goal_mask = goal_mask
-        self._goals = goal_mask.bit_count()
+    def __init__(self, goal: tuple[int, ...]) -> None:
+        self.goal = tuple(sorted(set(goal)))
+        self._goals = len(self.goal)
+        self._held: Callable[[int], int] = held_counter(self.goal)
 
     def estimate(self, state: int) -> float:
-        return self._goals - (self.goal_mask & state).bit_count()
+        return self._goals - self._held(state)
 
     def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
-        return self._goals - (self.goal_mask & state).bit_count(), ()
+        return self._goals - self._held(state), ()
 
 
 class GoalCountHeuristic(Configurable):
@@ -42,4 +47,4 @@ class GoalCountHeuristic(Configurable):
     admissible: ClassVar[bool] = False
 
     def for_task(self, task: GroundTask) -> GoalCountEstimator:
-        return GoalCountEstimator(task.goal_mask)
+        return GoalCountEstimator(task.goal)
