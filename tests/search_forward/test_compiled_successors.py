@@ -18,6 +18,7 @@ from shared_bench import small_bench
 from strips_framework.compiled import PURE_PYTHON_SWITCH
 from strips_framework.forward.breadth_first import BreadthFirstSearch
 from strips_framework.forward.components import StateEstimator
+from strips_framework.forward.packing import pack
 from strips_framework.forward.successors import SuccessorGenerator, successor_generator
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
@@ -65,6 +66,22 @@ def assert_same_successors(task: GroundTask) -> None:
         assert sorted(found) == expected
         for op in range(len(task.operators)):  # applicable or not: the same masks' result
             assert compiled.apply(state, op) == reference.apply(state, op), task.operators[op].name
+        packed = pack(state)
+        for generator in (reference, compiled):  # drawn one at a time, from either form
+            for form in (state, packed):
+                drawn, position = [], generator.next_applicable(form, 0)
+                while position >= 0:
+                    drawn.append(generator.order[position])
+                    position = generator.next_applicable(form, position + 1)
+                assert drawn == found, task.facts_of(state)
+                # Preferred operators (repeated, unordered, some not applicable) come out
+                # as the full list gives them.
+                assert (
+                    generator.ordered(form, [*reversed(range(len(task.operators))), *found])
+                    == found
+                )
+            for op in range(len(task.operators)):  # deletes absent, adds present too
+                assert generator.apply_packed(packed, op) == pack(generator.apply(state, op))
 
 
 def test_the_compiled_module_is_built(tasks):

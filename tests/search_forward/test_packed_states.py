@@ -22,7 +22,7 @@ from strips_framework.forward.breadth_first import BreadthFirstSearch
 from strips_framework.forward.eager import AStarSearch, GreedySearch
 from strips_framework.forward.ehc import EnforcedHillClimbing
 from strips_framework.forward.lazy import LazyGreedySearch
-from strips_framework.forward.packing import pack, packing, unpack
+from strips_framework.forward.packing import held_counter, pack, packing, unpack
 from strips_framework.forward.space import SPARSE, StateSpace, stores_packed
 from strips_framework.grounding.task import (
     GroundAxiom,
@@ -171,3 +171,69 @@ def test_packed_and_bitset_spaces_search_alike(
             s = result.statistics
             outcomes.append((result.status, result.plan, s.expanded, s.generated, s.evaluated))
         assert outcomes[0] == outcomes[1], (strategy.name, seed)
+
+
+class _PackedMissingGoals(_MissingGoals):
+    """:class:`_MissingGoals` reading packings too, counting those it is given."""
+
+    reads_packed = True
+
+    def __init__(self, task: GroundTask) -> None:
+        super().__init__(task)
+        self.packings = 0
+
+    def _bitset(self, state: int | bytes) -> int:
+        if isinstance(state, bytes):
+            self.packings += 1
+            return unpack(state)
+        return state
+
+    def estimate(self, state: int | bytes) -> float:  # type: ignore[override]
+        return super().estimate(self._bitset(state))
+
+    def estimate_with_preferred(self, state: int | bytes) -> tuple[float, list[int]]:  # type: ignore[override]
+        return super().estimate_with_preferred(self._bitset(state))
+
+
+def without_axioms(task: GroundTask) -> GroundTask:
+    """``task`` with no axioms (its derived facts never hold): a packed space makes such
+    a task's successors' packings from their parents' (``StateSpace.merges``)."""
+    return GroundTask(
+        task.name, task.facts, task.operators, task.init, task.goal, (), (), task.uses_costs
+    )
+
+
+@pytest.mark.parametrize("pure", ["", "1"])
+@pytest.mark.parametrize("seed", range(12))
+def test_lazy_search_on_packings_expands_what_it_expands_on_bitsets(
+    seed: int, pure: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A packed space without conditional effects or axioms: lazy search works on the
+    successors' packings, hands them to an estimator that reads them (and unpacks them
+    for one that does not), and expands the same states with the same plan."""
+    monkeypatch.setenv(PURE_PYTHON_SWITCH, pure)
+    task = without_axioms(spread(random_task(seed)))
+    outcomes = []
+    for sparse, estimator in (
+        (len(task.facts) + 1, _MissingGoals(task)),
+        (0, _MissingGoals(task)),
+        (0, _PackedMissingGoals(task)),
+    ):
+        monkeypatch.setattr(space_module, "SPARSE", sparse)
+        result = LazyGreedySearch().search_task(task, estimator, Limits(time=60))
+        s = result.statistics
+        outcomes.append((result.status, result.plan, s.expanded, s.generated, s.evaluated))
+    assert outcomes[0] == outcomes[1] == outcomes[2], seed
+    assert StateSpace(task, packed=True).merges
+    assert estimator.packings == outcomes[2][4]  # every state evaluated as its packing
+
+
+@pytest.mark.parametrize("compiled", [False, True])
+def test_a_held_counter_counts_the_facts_a_bitset_or_its_packing_holds(compiled: bool) -> None:
+    rng = random.Random(7)
+    for state in random_states(3):
+        for size in (1, 3, 40):
+            facts = sorted(rng.sample(range(100_001), size))
+            held = held_counter(facts, compiled)
+            expected = sum(state >> fact & 1 for fact in facts)
+            assert held(state) == held(pack(state)) == expected

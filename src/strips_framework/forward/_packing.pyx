@@ -4,7 +4,8 @@
 (``digits.h``), so packing costs one step per 30 facts (a word compared with zero) and
 one per true fact, and unpacking one per digit (zeroed) and one per true fact; the
 reference goes through a binary string and a byte string as long as the state.
-:class:`HeldCounter` reads one digit per fact it counts."""
+:class:`HeldCounter` reads one digit per fact it counts (or, given a packing,
+searches it once per fact)."""
 
 from cpython.bytes cimport PyBytes_AS_STRING, PyBytes_FromStringAndSize
 from array import array
@@ -16,6 +17,7 @@ from strips_framework.forward.digits cimport (
     __builtin_ctz,
     __builtin_popcount,
     strips_digits,
+    strips_first_at_or_after,
     strips_new_int,
 )
 
@@ -77,8 +79,10 @@ cdef class HeldCounter:
         return HeldCounter, ([self.facts[i] for i in range(self.count)],)
 
     def __call__(self, state):
+        if isinstance(state, bytes):
+            return self._in_packing(state)
         if not isinstance(state, int):
-            raise TypeError("a state is an int")
+            raise TypeError("a state is an int or its packing")
         cdef Py_ssize_t size, at, i, count = 0
         cdef const uint32_t* digits = strips_digits(state, &size)
         if size < 0:
@@ -88,5 +92,17 @@ cdef class HeldCounter:
             fact = self.facts[i]
             at = fact // STRIPS_DIGIT_BITS
             if at < size and (digits[at] >> (fact - at * STRIPS_DIGIT_BITS)) & 1:
+                count += 1
+        return count
+
+    cdef Py_ssize_t _in_packing(self, bytes packed):
+        """The count over a packing: a binary search per fact."""
+        cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(packed)
+        cdef Py_ssize_t length = len(packed) // 4, i, low, count = 0
+        cdef uint32_t fact
+        for i in range(self.count):
+            fact = <uint32_t> self.facts[i]
+            low = strips_first_at_or_after(facts, 0, length, fact)
+            if low < length and facts[low] == fact:
                 count += 1
         return count

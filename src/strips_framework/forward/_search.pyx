@@ -140,7 +140,7 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
     width = max(len(task.operators), 1)
     best_h = math.inf
     number = add(task.init, -1, -1)
-    state = task.init
+    state = stored(number) if merges else task.init  # as space.child gives states
     while True:
         h, preferred = evaluate(state)
         run.evaluated += 1

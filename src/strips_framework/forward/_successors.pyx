@@ -41,6 +41,7 @@ from strips_framework.forward.digits cimport (
     STRIPS_DIGIT_BITS,
     __builtin_ctz,
     strips_digits,
+    strips_first_at_or_after,
     strips_new_int,
     strips_set_size,
 )
@@ -162,7 +163,7 @@ cdef class SuccessorGenerator:
         return -1
 
     cdef Py_ssize_t _next_packed(self, bytes state, Py_ssize_t position) except -2:
-        cdef Py_ssize_t count = len(state) // 4, entries = len(self.order), low, high, middle
+        cdef Py_ssize_t count = len(state) // 4, entries = len(self.order), low, middle
         cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(state)
         if count and facts[count - 1] >= <uint32_t> self.num_facts:
             raise ValueError(f"not a state of {self.num_facts} facts")
@@ -175,13 +176,7 @@ cdef class SuccessorGenerator:
         if position >= entries:
             return -1
         cdef int fact = self.entry_key[position], entry
-        low, high = 0, count  # the first true fact at or after ``fact``
-        while low < high:
-            middle = (low + high) // 2
-            if facts[middle] < <uint32_t> fact:
-                low = middle + 1
-            else:
-                high = middle
+        low = strips_first_at_or_after(facts, 0, count, fact)  # the first true fact from ``fact``
         if low < count and facts[low] == <uint32_t> fact:
             for entry in range(position, self.bucket_start[fact + 1]):
                 if self._applies_packed(entry, facts, count):
@@ -195,21 +190,28 @@ cdef class SuccessorGenerator:
         return -1
 
     def ordered(self, state, operators):
-        """Those of ``operators`` applicable in ``state``, once each, in the order
-        :meth:`applicable` lists them."""
-        if not isinstance(state, int):
-            raise TypeError("a state is an int")
+        """Those of ``operators`` applicable in ``state`` (an int, or its packing), once
+        each, in the order :meth:`applicable` lists them."""
         cdef Py_ssize_t size
-        cdef const uint32_t* digits = strips_digits(state, &size)
-        if size < 0 or size > self.num_digits:
-            raise ValueError(f"not a state of {self.num_facts} facts")
+        cdef const uint32_t* digits = NULL
+        cdef const uint32_t* facts = NULL
+        cdef bint packed = isinstance(state, bytes)
+        if packed:
+            facts = <const uint32_t*> PyBytes_AS_STRING(state)
+            size = len(state) // 4
+        elif isinstance(state, int):
+            digits = strips_digits(state, &size)
+            if size < 0 or size > self.num_digits:
+                raise ValueError(f"not a state of {self.num_facts} facts")
+        else:
+            raise TypeError("a state is an int or its packing")
         cdef int op, entry
         cdef set found = set()
         for op in operators:
             if op < 0 or op >= len(self.order):
                 raise IndexError(f"no operator {op}")
             entry = self.position[op]
-            if self._applies(entry, digits, size):
+            if self._applies_packed(entry, facts, size) if packed else self._applies(entry, digits, size):
                 found.add(entry)
         return [self.entry_op[entry] for entry in sorted(found)]
 
@@ -235,7 +237,7 @@ cdef class SuccessorGenerator:
             while add < add_end or cut < cut_end:
                 adding = cut == cut_end or (add < add_end and self.adds[add] <= self.deletes[cut])
                 fact = self.adds[add] if adding else self.deletes[cut]
-                at = _first_at_or_after(facts, read, count, fact)
+                at = strips_first_at_or_after(facts, read, count, fact)
                 memcpy(out + made, facts + read, (at - read) * sizeof(uint32_t))
                 made += at - read
                 read = at
@@ -314,32 +316,10 @@ cdef class SuccessorGenerator:
         return child
 
 
-cdef inline Py_ssize_t _first_at_or_after(
-    const uint32_t* facts, Py_ssize_t low, Py_ssize_t high, uint32_t fact
-):
-    """The first place in ``facts[low:high]`` (sorted) holding ``fact`` or more."""
-    cdef Py_ssize_t middle
-    while low < high:
-        middle = (low + high) // 2
-        if facts[middle] < fact:
-            low = middle + 1
-        else:
-            high = middle
-    return low
-
-
 cdef inline bint _listed(const uint32_t* facts, Py_ssize_t count, int fact):
-    """Whether ``fact`` is among the ``count`` sorted ``facts`` (binary search)."""
-    cdef Py_ssize_t low = 0, high = count, middle
-    while low < high:
-        middle = (low + high) // 2
-        if facts[middle] < <uint32_t> fact:
-            low = middle + 1
-        elif facts[middle] == <uint32_t> fact:
-            return True
-        else:
-            high = middle
-    return False
+    """Whether ``fact`` is among the ``count`` sorted ``facts``."""
+    cdef Py_ssize_t at = strips_first_at_or_after(facts, 0, count, <uint32_t> fact)
+    return at < count and facts[at] == <uint32_t> fact
 
 
 cdef inline bint _holds(const uint32_t* digits, Py_ssize_t size, int fact):

@@ -22,11 +22,22 @@ class StateEstimator(Protocol):
 
     ``estimate`` is all an estimator must have. One that proposes preferred operators
     also has ``estimate_with_preferred`` (:class:`PreferredEstimator`); the searches
-    reach it through :func:`with_preferred`, which gives an estimator without it none."""
+    reach it through :func:`with_preferred`, which gives an estimator without it none.
+
+    A state is an int bitset. An estimator whose class sets ``reads_packed = True``
+    also takes a state as its packing (bytes: the sorted numbers of its true facts,
+    :mod:`~strips_framework.forward.packing`), which lazy search in a packed state space
+    then passes as it is instead of making the bitset, whose length is the task's
+    facts (:func:`reads_packed`)."""
 
     def estimate(self, state: int) -> float:
         """The estimated cost from ``state`` to the goal; ``math.inf`` for a dead end."""
         ...
+
+
+def reads_packed(estimator: StateEstimator) -> bool:
+    """Whether ``estimator`` takes states as packings too (see :class:`StateEstimator`)."""
+    return bool(getattr(type(estimator), "reads_packed", False))
 
 
 class PreferredEstimator(StateEstimator, Protocol):

@@ -1,4 +1,5 @@
-# The declarations of digits.h (see there) for the compiled modules that read states.
+# The declarations of digits.h and packed.h (see there) for the compiled modules that
+# read states.
 from libc.stdint cimport uint32_t
 
 
@@ -13,3 +14,8 @@ cdef extern from *:
     # The lowest set bit's place and the set bits' count of a non-zero digit (GCC, Clang).
     int __builtin_ctz(unsigned int x)
     int __builtin_popcount(unsigned int x)
+
+
+cdef extern from "packed.h":
+    # See packed.h: a binary search in a packing's facts.
+    Py_ssize_t strips_first_at_or_after(const uint32_t* facts, Py_ssize_t low, Py_ssize_t high, uint32_t fact)

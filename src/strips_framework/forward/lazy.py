@@ -28,7 +28,7 @@ from typing import ClassVar
 
 from strips_framework.compiled import compiled_module
 from strips_framework.forward.base import ForwardStrategy, SearchRun
-from strips_framework.forward.components import with_preferred
+from strips_framework.forward.components import reads_packed, with_preferred
 from strips_framework.forward.openlists import OpenList, open_list
 from strips_framework.forward.space import NO_PARENT
 from strips_framework.options import Option
@@ -52,26 +52,42 @@ class LazyGreedySearch(ForwardStrategy):
             return self.reference_run(run)
         return module.lazy_greedy(run, self._evaluator(run), self.preferred, self.boost)
 
-    def _evaluator(self, run: SearchRun) -> Callable[[int], tuple[float, Sequence[int]]]:
-        """h and the preferred operators of a state (none unless ``preferred``)."""
+    def _evaluator(self, run: SearchRun) -> Callable[[int | bytes], tuple[float, Sequence[int]]]:
+        """h and the preferred operators of a state (none unless ``preferred``), as the
+        search holds it: a packing where the space makes successors' packings
+        (:attr:`~.space.StateSpace.merges`), unpacked first for an estimator that does
+        not read packings, else a bitset."""
         if self.preferred:
-            return with_preferred(run.estimator)
-        estimate = run.estimator.estimate
+            evaluate = with_preferred(run.estimator)
+        else:
+            estimate = run.estimator.estimate
 
-        def evaluate(state: int) -> tuple[float, tuple[int, ...]]:
-            return estimate(state), ()
+            def evaluate(state: int) -> tuple[float, Sequence[int]]:
+                return estimate(state), ()
 
-        return evaluate
+        if not run.space.merges or reads_packed(run.estimator):
+            return evaluate  # type: ignore[return-value]
+        unpack = run.space.unpack
+
+        def evaluate_unpacked(state: int | bytes) -> tuple[float, Sequence[int]]:
+            return evaluate(unpack(state))  # type: ignore[arg-type]
+
+        return evaluate_unpacked
 
     def reference_run(self, run: SearchRun) -> int | None:
         """The search in Python (the compiled loop's reference)."""
         task, space, budget = run.task, run.space, run.budget
         evaluate = self._evaluator(run)
         successors = space.successors
-        following_of, ordered, order = successors.next_applicable, successors.ordered, successors.order
+        following_of, ordered, order = (
+            successors.next_applicable,
+            successors.ordered,
+            successors.order,
+        )
         frontier: OpenList[_Cursor | tuple[int, int]] = open_list(self.preferred, self.boost)
         best_h = math.inf
-        number, state = space.add(task.init, NO_PARENT, NO_PARENT), task.init
+        number = space.add(task.init, NO_PARENT, NO_PARENT)
+        state = space.stored(number) if space.merges else task.init
         while True:
             h, preferred = evaluate(state)
             run.evaluated += 1
@@ -108,7 +124,7 @@ class LazyGreedySearch(ForwardStrategy):
                 run.generated += 1
                 child = space.child(parent, op)
                 if child is not None:
-                    state, number = child, space.add(child, parent, op)
+                    state, number = child, space.add(child, parent, op)  # type: ignore[arg-type]
                     break
 
 

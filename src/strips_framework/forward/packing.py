@@ -17,7 +17,7 @@ place, and :func:`packing` picks it as
 :func:`held_counter` counts which of a few facts (a goal) a state holds: with masks,
 ``(mask & state).bit_count()`` costs as much as the mask is long, i.e. up to the
 highest of those facts' numbers (20 µs a state at 800,000 facts); compiled, it reads
-one digit per fact.
+one digit per fact, or searches a packing once per fact.
 """
 
 from __future__ import annotations
@@ -55,14 +55,19 @@ def packing(compiled: bool | None = None) -> tuple[Callable[[int], bytes], Calla
     return module.pack, module.unpack
 
 
-def held_counter(facts: Sequence[int], compiled: bool | None = None) -> Callable[[int], int]:
-    """A function of a state: how many of ``facts`` hold in it (compiled when built)."""
+def held_counter(
+    facts: Sequence[int], compiled: bool | None = None
+) -> Callable[[int | bytes], int]:
+    """A function of a state (a bitset or its packing): how many of ``facts`` hold in
+    it (compiled when built)."""
     module: ModuleType | None = compiled_module("strips_framework.forward._packing", compiled)
     if module is not None:
         return module.HeldCounter(facts)  # type: ignore[no-any-return]
     mask = mask_of(tuple(facts))
 
-    def held(state: int) -> int:
+    def held(state: int | bytes) -> int:
+        if isinstance(state, bytes):
+            state = unpack(state)
         return (mask & state).bit_count()
 
     return held

@@ -16,11 +16,15 @@ with 900 blocks: 108 KB a state as bitsets, 4 KB packed). Either way the searche
 the same states in the same order: only their storage differs.
 
 :meth:`StateSpace.child` is what lazy search asks of a stored state: its successor by an
-operator, unless reached before. In a packed space the successor's packing is made from
-its parent's (:meth:`~.successors.SuccessorGenerator.apply_packed`, a merge as long as
-the state) and looked up first, so a duplicate costs no bitset, and the goal test reads
-only the goal's facts (:func:`~.packing.held_counter`): what a successor costs then
-grows with the facts that hold, apart from writing a new state's bitset.
+operator, unless reached before. In a packed space the successor is made as a packing,
+from its parent's (:meth:`~.successors.SuccessorGenerator.apply_packed`: copies of the
+runs of facts between the operator's changes), and lazy search works on packings from
+there: the duplicate test hashes the packing, the goal test searches it for the goal's
+facts (:func:`~.packing.held_counter`), the successor generator walks it, and an
+estimator that reads packings (``reads_packed``, see
+:class:`~.components.StateEstimator`) gets it as it is; for the others the bitset is
+made then (as long as the task has facts: 2 µs at 800,000 facts). What a successor
+costs then grows with the facts that hold, not with those the task has.
 """
 
 from __future__ import annotations
@@ -73,13 +77,16 @@ class StateSpace:
         #: A state as stored (by number): its bitset, or its packing in a packed space;
         #: the successor generator takes either.
         self.stored: Callable[[int], int | bytes] = self._stored.__getitem__
-        #: Whether a state holds the goal's facts.
-        self.is_goal: Callable[[int], bool] = task.is_goal
+        #: Whether a state holds the goal's facts (in a packed space, a bitset or a packing).
+        self.is_goal: Callable[[int | bytes], bool] = task.is_goal  # type: ignore[assignment]
+        #: The bitset of a packing.
+        self.unpack: Callable[[bytes], int] = packing()[1]
         #: Whether :meth:`child` makes a successor's packing from its parent's (a packed
         #: space without conditional effects or axioms, which need the whole state).
         self.merges = self.packed and self.successors.effects is None and self.derive is None
         if self.packed:
             self._pack, self._unpack = packing()
+            self.unpack = self._unpack
             self._recent: OrderedDict[int, int] = OrderedDict()
             #: The state last packed and its packing (a search asks for a state's
             #: number and then adds it: one packing for both).
@@ -96,8 +103,8 @@ class StateSpace:
     def __len__(self) -> int:
         return len(self._stored)
 
-    def _key(self, state: int) -> int | bytes:
-        if not self.packed:
+    def _key(self, state: int | bytes) -> int | bytes:
+        if not self.packed or isinstance(state, bytes):
             return state
         last, packed = self._last
         if last is not state:
@@ -138,27 +145,26 @@ class StateSpace:
             result = (state ^ (state & delete)) | add
         return self.derive(result) if self.derive is not None else result
 
-    def child(self, parent: int, operator: int) -> int | None:
+    def child(self, parent: int, operator: int) -> int | bytes | None:
         """The state ``operator`` makes of state number ``parent``, or None when it was
-        reached before."""
+        reached before: as the space stores it where :attr:`merges` (its packing, for
+        :meth:`add`, :attr:`is_goal`, the successor generator and the estimators that
+        read packings), else its bitset."""
         if not self.merges:
             state = self.successor(self.state(parent), operator)
             return state if self.number(state) is None else None
         packed = self.successors.apply_packed(self._stored[parent], operator)  # type: ignore[arg-type]
-        if packed in self._keys:
-            return None
-        state = self._unpack(packed)
-        self._last = (state, packed)
-        return state
+        return None if packed in self._keys else packed
 
-    def add(self, state: int, parent: int, operator: int) -> int:
-        """Number a new state reached from state number ``parent`` by ``operator``."""
+    def add(self, state: int | bytes, parent: int, operator: int) -> int:
+        """Number a new state reached from state number ``parent`` by ``operator`` (its
+        bitset, or in a packed space its packing)."""
         number = len(self._stored)
         key = self._key(state)
         self._keys[key] = number
         self._stored.append(key)
         if self.packed and not self.merges:  # lazy search asks for their parents' states
-            self._remember(number, state)
+            self._remember(number, state)  # type: ignore[arg-type]
         self.parents.append(parent)
         self.operators.append(operator)
         return number

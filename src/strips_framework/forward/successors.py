@@ -47,7 +47,7 @@ class Successors(Protocol):
 
     def next_applicable(self, state: int | bytes, position: int) -> int: ...
 
-    def ordered(self, state: int, operators: Iterable[int]) -> list[int]: ...
+    def ordered(self, state: int | bytes, operators: Iterable[int]) -> list[int]: ...
 
     def apply(self, state: int, operator: int) -> int: ...
 
@@ -128,10 +128,12 @@ class SuccessorGenerator:
         places = [self.position[op] for op in self.applicable(state)]
         return next((place for place in places if place >= position), -1)
 
-    def ordered(self, state: int, operators: Iterable[int]) -> list[int]:
-        """Those of ``operators`` applicable in ``state``, once each, in the order
-        :meth:`applicable` lists them (a heuristic's preferred operators, queued as a
-        search would queue them from the full list)."""
+    def ordered(self, state: int | bytes, operators: Iterable[int]) -> list[int]:
+        """Those of ``operators`` applicable in ``state`` (a bitset or its packing), once
+        each, in the order :meth:`applicable` lists them (a heuristic's preferred
+        operators, queued as a search would queue them from the full list)."""
+        if isinstance(state, bytes):
+            state = unpack(state)
         found = {op for op in operators if self._operators[op].applicable(state)}
         return sorted(found, key=self.position.__getitem__)
 

@@ -17,8 +17,10 @@ class GoalCountEstimator(Record):
     operation, ``goal_mask & state``, costs as much as the mask is long, up to the
     highest goal fact's number (20 µs a state at 800,000 facts for a goal of three), and
     the count of what is missing, ``goal_mask & ~state``, complements the whole state
-    first (a negative int)."""
+    first (a negative int). It reads a state's packing as well (``reads_packed``), so a
+    packed state space's lazy search never makes the bitset for it."""
 
+    reads_packed: ClassVar[bool] = True
     goal: tuple[int, ...]
 
     FIELDS = ("goal",)
@@ -27,12 +29,12 @@ class GoalCountEstimator(Record):
     def __init__(self, goal: tuple[int, ...]) -> None:
         self.goal = tuple(sorted(set(goal)))
         self._goals = len(self.goal)
-        self._held: Callable[[int], int] = held_counter(self.goal)
+        self._held: Callable[[int | bytes], int] = held_counter(self.goal)
 
-    def estimate(self, state: int) -> float:
+    def estimate(self, state: int | bytes) -> float:
         return self._goals - self._held(state)
 
-    def estimate_with_preferred(self, state: int) -> tuple[float, tuple[int, ...]]:
+    def estimate_with_preferred(self, state: int | bytes) -> tuple[float, tuple[int, ...]]:
         return self._goals - self._held(state), ()
 
 
