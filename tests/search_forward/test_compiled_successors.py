@@ -22,7 +22,7 @@ from strips_framework.forward.packing import pack
 from strips_framework.forward.successors import SuccessorGenerator, successor_generator
 from strips_framework.grounding import ground
 from strips_framework.grounding.axioms import AxiomEvaluator
-from strips_framework.grounding.task import GroundTask
+from strips_framework.grounding.task import GroundOperator, GroundTask, mask_of
 from strips_framework.limits import Limits
 from strips_framework.pddl import find_domain, load_task
 
@@ -133,3 +133,16 @@ def test_searches_expand_alike(monkeypatch, domain, problem):
     compiled, python = results
     assert (compiled.status, compiled.plan) == (python.status, python.plan)
     assert compiled.statistics.expanded == python.statistics.expanded
+
+
+def test_a_packed_successor_takes_effects_in_any_order_and_repeated():
+    """Effects listed unsorted, repeated, deleted and added at once (the add wins), or
+    deleted while absent: the packing of the bitset successor, compiled and reference."""
+    op = GroundOperator("(op)", (), (64, 3, 64, 31), (31, 90, 2, 90, 3))
+    task = GroundTask(
+        "t", tuple(f"(f{i})" for i in range(100)), (op,), mask_of((2, 31, 40, 90)), (3,)
+    )
+    for compiled in (False, True):
+        generator = successor_generator(task, compiled=compiled)
+        for state in (task.init, 0, mask_of((3, 64)), mask_of((1, 2, 31, 99))):
+            assert generator.apply_packed(pack(state), 0) == pack(generator.apply(state, 0))

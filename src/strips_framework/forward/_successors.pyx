@@ -82,24 +82,27 @@ cdef class SuccessorGenerator:
             neg_starts.append(len(neg))
         self.bucket_start, self.entry_op = array("i", starts), array("i", entries or [0])
         self.order = tuple(entries)
-        keys = [-1] * self.num_unkeyed
-        for fact in range(len(starts) - 1):
-            keys.extend([fact] * (starts[fact + 1] - starts[fact]))
-        self.entry_key = array("i", keys or [0])
-        place = [0] * len(operators)
-        for index, op in enumerate(entries):
-            place[op] = index
-        self.position = array("i", place or [0])
+        self.entry_key = array("i", [-1]) * max(len(entries), 1)
+        self.position = array("i", [0]) * max(len(operators), 1)
+        cdef Py_ssize_t entry, key
+        for key in range(len(starts) - 1):
+            for entry in range(self.bucket_start[key], self.bucket_start[key + 1]):
+                self.entry_key[entry] = key
+        for entry in range(len(entries)):
+            self.position[self.entry_op[entry]] = entry
         self.pre_start, self.pre = array("i", pre_starts), array("i", pre or [0])
         self.neg_start, self.neg = array("i", neg_starts), array("i", neg or [0])
         add_starts, adds, delete_starts, deletes = [0], [], [0], []
-        for op in operators:  # sorted, for apply_packed's merge
-            adds.extend(sorted(set(op.add)))
+        for op in operators:
+            adds.extend(op.add)
             add_starts.append(len(adds))
-            deletes.extend(sorted(set(op.delete)))
+            deletes.extend(op.delete)
             delete_starts.append(len(deletes))
         self.add_start, self.adds = array("i", add_starts), array("i", adds or [0])
         self.delete_start, self.deletes = array("i", delete_starts), array("i", deletes or [0])
+        for entry in range(len(operators)):  # each operator's sorted, for apply_packed's merge
+            _sort(self.adds, self.add_start[entry], self.add_start[entry + 1])
+            _sort(self.deletes, self.delete_start[entry], self.delete_start[entry + 1])
         self.delete, self.add, self.effects = reference.delete, reference.add, reference.effects
 
     cdef inline bint _applies(self, int entry, const uint32_t* digits, Py_ssize_t size):
@@ -246,10 +249,9 @@ cdef class SuccessorGenerator:
                 if adding:
                     out[made] = fact
                     made += 1
-                    if cut < cut_end and self.deletes[cut] == fact:
-                        cut += 1
+                while add < add_end and <uint32_t> self.adds[add] == fact:  # repeats too
                     add += 1
-                else:
+                while cut < cut_end and <uint32_t> self.deletes[cut] == fact:
                     cut += 1
             memcpy(out + made, facts + read, (count - read) * sizeof(uint32_t))
             made += count - read
@@ -314,6 +316,19 @@ cdef class SuccessorGenerator:
             top -= 1
         strips_set_size(child, top)
         return child
+
+
+cdef inline void _sort(int[::1] values, Py_ssize_t start, Py_ssize_t end):
+    """Sort ``values[start:end]`` in place (insertion: an operator has a few effects)."""
+    cdef Py_ssize_t i, j
+    cdef int value
+    for i in range(start + 1, end):
+        value = values[i]
+        j = i
+        while j > start and values[j - 1] > value:
+            values[j] = values[j - 1]
+            j -= 1
+        values[j] = value
 
 
 cdef inline bint _listed(const uint32_t* facts, Py_ssize_t count, int fact):

@@ -25,6 +25,7 @@ arrays, with the same operators in the same order, so searches expand the same s
 from __future__ import annotations
 
 from collections import Counter
+from functools import cached_property
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Protocol
 
@@ -44,6 +45,17 @@ class Successors(Protocol):
     order: Sequence[int]
 
     def applicable(self, state: int) -> list[int]: ...
+
+    @cached_property
+    def order(self) -> tuple[int, ...]:
+        """The operators in the order :meth:`applicable` lists them, by position (made
+        on first use: the compiled generator lays out its own)."""
+        return self.unkeyed + tuple(op for key in sorted(self.buckets) for op in self.buckets[key])
+
+    @cached_property
+    def position(self) -> dict[int, int]:
+        """Per operator number, its position in :attr:`order`."""
+        return {op: place for place, op in enumerate(self.order)}
 
     def next_applicable(self, state: int | bytes, position: int) -> int: ...
 
@@ -96,9 +108,6 @@ class SuccessorGenerator:
             key: tuple(entries) for key, entries in buckets.items()
         }
         self.unkeyed = tuple(unkeyed)
-        self.order = self.unkeyed + tuple(op for key in sorted(buckets) for op in buckets[key])
-        #: Per operator number, its position in :attr:`order`.
-        self.position = {op: place for place, op in enumerate(self.order)}
         self._operators = operators
         #: Per operator: the masks of its unconditional deletes and adds.
         self.delete = _OperatorMasks(lambda op: op.delete_mask, operators)
@@ -119,6 +128,17 @@ class SuccessorGenerator:
                 if operators[i].applicable(state):
                     found.append(i)
         return found
+
+    @cached_property
+    def order(self) -> tuple[int, ...]:
+        """The operators in the order :meth:`applicable` lists them, by position (made
+        on first use: the compiled generator lays out its own)."""
+        return self.unkeyed + tuple(op for key in sorted(self.buckets) for op in self.buckets[key])
+
+    @cached_property
+    def position(self) -> dict[int, int]:
+        """Per operator number, its position in :attr:`order`."""
+        return {op: place for place, op in enumerate(self.order)}
 
     def next_applicable(self, state: int | bytes, position: int) -> int:
         """The position (in :attr:`order`) of the first operator applicable in ``state``
