@@ -25,8 +25,8 @@ arrays, with the same operators in the same order, so searches expand the same s
 from __future__ import annotations
 
 from collections import Counter
-from functools import cached_property
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from functools import cached_property
 from typing import Protocol
 
 from strips_framework.allocation import collection_paused
@@ -45,17 +45,6 @@ class Successors(Protocol):
     order: Sequence[int]
 
     def applicable(self, state: int) -> list[int]: ...
-
-    @cached_property
-    def order(self) -> tuple[int, ...]:
-        """The operators in the order :meth:`applicable` lists them, by position (made
-        on first use: the compiled generator lays out its own)."""
-        return self.unkeyed + tuple(op for key in sorted(self.buckets) for op in self.buckets[key])
-
-    @cached_property
-    def position(self) -> dict[int, int]:
-        """Per operator number, its position in :attr:`order`."""
-        return {op: place for place, op in enumerate(self.order)}
 
     def next_applicable(self, state: int | bytes, position: int) -> int: ...
 
