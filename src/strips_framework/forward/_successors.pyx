@@ -34,7 +34,6 @@ from array import array
 
 from cpython.bytes cimport PyBytes_AS_STRING, PyBytes_FromStringAndSize
 from libc.stdint cimport uint32_t
-from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy
 
 from strips_framework.forward.digits cimport (
@@ -225,39 +224,42 @@ cdef class SuccessorGenerator:
         search), so a successor costs a copy of its parent's packing."""
         if operator < 0 or operator >= len(self.add_start) - 1:
             raise IndexError(f"no operator {operator}")
-        cdef Py_ssize_t count = len(packed) // 4, made = 0, read = 0, at
+        cdef Py_ssize_t count = len(packed) // 4
         cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(packed)
+        cdef bytes made = PyBytes_FromStringAndSize(NULL, self._merge(facts, count, operator, NULL) * 4)
+        self._merge(facts, count, operator, <uint32_t*> PyBytes_AS_STRING(made))
+        return made
+
+    cdef Py_ssize_t _merge(self, const uint32_t* facts, Py_ssize_t count, int operator, uint32_t* out):
+        """Write the successor's facts to ``out`` (just count them when it is NULL): the
+        changes in ascending order, at each the run of facts below it copied, then the
+        added fact written or the deleted one skipped (an add wins)."""
+        cdef Py_ssize_t made = 0, read = 0, at
         cdef int add = self.add_start[operator], add_end = self.add_start[operator + 1]
         cdef int cut = self.delete_start[operator], cut_end = self.delete_start[operator + 1]
-        cdef uint32_t* out = <uint32_t*> malloc((count + add_end - add + 1) * sizeof(uint32_t))
-        if out == NULL:
-            raise MemoryError()
         cdef uint32_t fact
         cdef bint adding
-        try:
-            # The changes in ascending order: at each, copy the run of facts below it,
-            # then write the added fact or skip the deleted one (an add wins).
-            while add < add_end or cut < cut_end:
-                adding = cut == cut_end or (add < add_end and self.adds[add] <= self.deletes[cut])
-                fact = self.adds[add] if adding else self.deletes[cut]
-                at = strips_first_at_or_after(facts, read, count, fact)
+        while add < add_end or cut < cut_end:
+            adding = cut == cut_end or (add < add_end and self.adds[add] <= self.deletes[cut])
+            fact = self.adds[add] if adding else self.deletes[cut]
+            at = strips_first_at_or_after(facts, read, count, fact)
+            if out != NULL:
                 memcpy(out + made, facts + read, (at - read) * sizeof(uint32_t))
-                made += at - read
-                read = at
-                if read < count and facts[read] == fact:
-                    read += 1  # present: dropped if deleted, written again if added
-                if adding:
+            made += at - read
+            read = at
+            if read < count and facts[read] == fact:
+                read += 1  # present: dropped if deleted, written again if added
+            if adding:
+                if out != NULL:
                     out[made] = fact
-                    made += 1
-                while add < add_end and <uint32_t> self.adds[add] == fact:  # repeats too
-                    add += 1
-                while cut < cut_end and <uint32_t> self.deletes[cut] == fact:
-                    cut += 1
+                made += 1
+            while add < add_end and <uint32_t> self.adds[add] == fact:  # repeats too
+                add += 1
+            while cut < cut_end and <uint32_t> self.deletes[cut] == fact:
+                cut += 1
+        if out != NULL:
             memcpy(out + made, facts + read, (count - read) * sizeof(uint32_t))
-            made += count - read
-            return PyBytes_FromStringAndSize(<char*> out, made * sizeof(uint32_t))
-        finally:
-            free(out)
+        return made + count - read
 
     def applicable(self, state):
         """The numbers of the operators applicable in ``state``, in the reference's order."""

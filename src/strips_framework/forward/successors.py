@@ -41,8 +41,10 @@ class Successors(Protocol):
     delete: Mapping[int, int]
     add: Mapping[int, int]
     effects: Mapping[int, tuple[tuple[int, int, int, int], ...]] | None
-    #: The operators in the order :meth:`applicable` lists them, by position.
-    order: Sequence[int]
+    @property
+    def order(self) -> Sequence[int]:
+        """The operators in the order :meth:`applicable` lists them, by position."""
+        ...
 
     def applicable(self, state: int) -> list[int]: ...
 
