@@ -36,6 +36,10 @@ from strips_framework.logic.formulas import And, Atomic, Formula, conjuncts
 from strips_framework.logic.terms import EQUALITY, WILDCARD, Atom, Param, Term, is_ground
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.worldmodel.problem import OperatorSchema, Problem
+from strips_framework.worldmodel.world import WorldModel
+
+#: What the necessary facts of a goal are judged against: M0's facts, or a model.
+Facts = frozenset[Atom] | WorldModel
 
 #: How many achiever levels the necessary facts of a goal are collected from.
 _DEPTH = 2
@@ -91,7 +95,7 @@ def _ground_goal_atoms(goal: Formula) -> list[Atom] | None:
 
 
 def _necessary(
-    atom: Atom, operators: tuple[OperatorSchema, ...], initial: frozenset[Atom], depth: int
+    atom: Atom, operators: tuple[OperatorSchema, ...], initial: Facts, depth: int
 ) -> set[Atom]:
     """Ground atoms that hold whenever an operator adding ``atom`` is applied for the
     first time (see the module docstring); empty when no operator adds it."""
@@ -110,13 +114,13 @@ def _necessary(
 
 
 def _only_after(
-    pre: Atom, atom: Atom, operators: tuple[OperatorSchema, ...], initial: frozenset[Atom]
+    pre: Atom, atom: Atom, operators: tuple[OperatorSchema, ...], initial: Facts
 ) -> bool:
     """Whether ``pre`` can only hold once ``atom`` has held: no M0 fact matches it and
     every operator adding it needs ``atom`` (depot's ``unload`` makes ``lifting(h, c)``
     from ``in(c, t)``, which only ``load`` adds, from ``lifting(h, c)``: the first
     ``lifting`` of a crate on the floor comes from ``lift``, which needs it ``clear``)."""
-    if any(unify(pre, fact, {}) is not None for fact in initial if fact[0] == pre[0]):
+    if _matched(pre, initial):
         return False
     achievers = 0
     for schema, binding in _achievers(pre, operators):
@@ -125,6 +129,27 @@ def _only_after(
         if not any(unify(need, atom, {}) is not None for need in needs):
             return False
     return achievers > 0
+
+
+def _matched(atom: Atom, facts: Facts) -> bool:
+    """Whether a fact of ``facts`` (a set of atoms, or a world model) unifies with ``atom``."""
+    if isinstance(facts, WorldModel):
+        candidates: Iterable[Atom] = facts.facts_matching(atom)
+    else:
+        candidates = (fact for fact in facts if fact[0] == atom[0])
+    return any(unify(atom, fact, {}) is not None for fact in candidates)
+
+
+def needed_first(atom: Atom, goal: Atom, operators: tuple[OperatorSchema, ...],
+                 model: WorldModel) -> bool:
+    """Whether ``goal`` (ground) must hold before any operator can first make ``atom``
+    true from ``model``: it is in the precondition of every achiever of ``atom`` that
+    does not need ``atom`` itself (see :func:`_necessary`, one level). An instance
+    pushed to achieve ``goal`` that needs ``atom`` goes round in a circle: depot's
+    ``drop(x, crate5, z, p)``, offered for ``clear(crate5)``, needs
+    ``lifting(x, crate5)``, and a crate on a stack is lifted only once it is clear."""
+    atom = _unbound_to_variables(atom, {})
+    return not _matched(atom, model) and goal in _necessary(atom, operators, model, 1)
 
 
 def _inconsistent(
