@@ -122,9 +122,10 @@ class AddListIndex(Record):
     root: WorldModel | None
     model_bindings: bool
     unmatched: dict[tuple[Atom, ...], bool]
+    settled: dict[tuple[WorldModel, OperatorInstance], OperatorInstance]
 
-    __slots__ = ("by_cost", "by_predicate", "concluded", "rigid", "root", "model_bindings",
-                 "unmatched")  # fmt: skip
+    __slots__ = ("by_cost", "by_predicate", "concluded", "model_bindings", "rigid", "root",
+                 "settled", "unmatched")  # fmt: skip
 
     def __init__(
         self,
@@ -142,6 +143,7 @@ class AddListIndex(Record):
         self.root = root
         self.model_bindings = model_bindings
         self.unmatched = {}
+        self.settled = {}
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         """The relevant instances, ranked. When no instance binds all its parameters
@@ -160,8 +162,6 @@ class AddListIndex(Record):
         judged: dict[OperatorInstance, tuple[int, int] | None] = {}
         # The instance an add atom makes of a literal depends on the literal alone.
         bound: dict[tuple[int, Atom], tuple[OperatorInstance, dict] | None] = {}
-        # An instance with the parameters the model settles (``model_bindings``).
-        settled: dict[OperatorInstance, OperatorInstance] = {}
         order = 0
         for clause in difference.clauses:
             for position, (positive, atom) in enumerate(clause.literals):
@@ -177,9 +177,7 @@ class AddListIndex(Record):
                         continue
                     instance, unifier = made
                     if self.model_bindings:
-                        if instance not in settled:
-                            settled[instance] = self._settled(instance, model)
-                        instance = settled[instance]
+                        instance = self._settled(instance, model)
                     if instance not in judged:
                         judged[instance] = self._judge(instance, model, protected)
                     verdict = judged[instance]
@@ -207,7 +205,17 @@ class AddListIndex(Record):
         offers to make some other crate sit on the pallet or become clear, and those
         subgoals loop back through the lift below them. Atoms no fact matches are what
         the subgoal must achieve, left out; atoms of predicates a rule concludes are
-        not looked at (the fact index does not decide them)."""
+        not looked at (the fact index does not decide them). Kept per model and
+        instance: nodes of one model share most instances, whatever their differences."""
+        key = (model, instance)
+        known = self.settled.get(key)
+        if known is None:
+            if len(self.settled) >= _SETTLED_KEPT:
+                self.settled.clear()
+            known = self.settled[key] = self._settle(instance, model)
+        return known
+
+    def _settle(self, instance: OperatorInstance, model: WorldModel) -> OperatorInstance:
         binding = instance.binding_map()
         atoms = [
             part for part in _conjunct_atoms(instance.schema.precondition)
@@ -223,10 +231,7 @@ class AddListIndex(Record):
                 atom = substitute(part, binding)
                 if not params_of(atom):
                     continue
-                matches = [
-                    unifier for fact in model.facts_matching(atom)
-                    if (unifier := unify(atom, fact, {})) is not None
-                ]
+                matches = _first_matches(atom, model)
                 if len(matches) == 1:
                     for param in params_of(atom):
                         value = substitute(param, matches[0])
@@ -288,6 +293,21 @@ class AddListIndex(Record):
         return missing, _deleted_count(instance, protected)
 
 
+def _first_matches(atom: Atom, model: WorldModel) -> list[dict]:
+    """The unifiers of ``atom`` with ``model``'s facts, up to the second: whether it
+    matches none, one or more is all :meth:`AddListIndex._settle` asks."""
+    found: list[dict] = []
+    for fact in model.facts_matching(atom):
+        unifier = unify(atom, fact, {})
+        if unifier is not None:
+            found.append(unifier)
+            if len(found) == 2:
+                break
+    return found
+
+
+#: How many (model, instance) pairs :meth:`AddListIndex._settled` remembers at most.
+_SETTLED_KEPT = 200_000
 #: Unifications the join of :func:`_join_values` may try before it gives up.
 _JOIN_BUDGET = 2_000
 

@@ -73,6 +73,7 @@ class MeansEndsRun:
         self.goal_loops = goal_loops
         self.achiever_loops = achiever_loops
         self.operators = tuple(problem.operators)
+        self.first_needs: dict[tuple[Atom, Atom, WorldModel], bool] = {}
 
     def solutions(self) -> Iterator[Node]:
         """The goal nodes of the search, in the order found: asked for another, the
@@ -230,11 +231,16 @@ class MeansEndsRun:
         ``lifting(x, crate5)``, and a crate on a stack is only lifted once it is clear
         (:func:`~strips_framework.means_ends.goal_order.needed_first`)."""
         adds = [atom for atom in instance.effects()[1] if atom in wanted]
-        return bool(adds) and any(
-            needed_first(need, atom, self.operators, model)
-            for need in atoms_of(instance.precondition())
-            for atom in adds
-        )
+        for atom in adds:
+            for need in atoms_of(instance.precondition()):
+                key = (need, atom, model)
+                known = self.first_needs.get(key)
+                if known is None:
+                    known = self.first_needs[key] = needed_first(
+                        need, atom, self.operators, model)
+                if known:
+                    return True
+        return False
 
     def _looping_atoms(self, node: Node) -> set[Atom]:
         """What a subgoal pushed at ``node`` must not need: the ground atoms that the
