@@ -162,3 +162,32 @@ def test_instances_whose_rigid_atoms_with_unbound_parameters_match_no_facts_are_
     ]
     # Off (the default), only ground rigid atoms are checked: all three are kept.
     assert len(_relevant(difference, [move_up], model)) == 3
+
+
+def test_model_bindings_bind_the_parameters_the_models_facts_settle():
+    # lift(h, c, s, pl) for CLEAR(P): ON(?c, P) matches one fact (C0 is on P), which
+    # binds c, then AT(C0, ?pl) binds pl; AT(?h, D) matches four facts, but joined with
+    # HOIST(?h) only H1. For LIFTING(H2, C1), ON(C1, ?s) binds s, but AT(H2, ?pl) and
+    # AT(C1, ?pl) each match one fact with another place: pl is left to the proof.
+    # (CLEAR(?c) matches two facts; had it matched one other crate, c would stay too.)
+    h, c, s, pl = Param("h"), Param("c"), Param("s"), Param("pl")
+    lift = OperatorSchema(
+        "lift", [h, c, s, pl],
+        And([Atomic(("HOIST", h)), Atomic(("AT", h, pl)), Atomic(("AT", c, pl)),
+             Atomic(("ON", c, s)), Atomic(("CLEAR", c))]),
+        [("LIFTING", h, c), ("CLEAR", s)], [("ON", c, s), ("CLEAR", c)],
+    )
+    facts = [("HOIST", "H1"), ("HOIST", "H2"), ("ON", "C0", "P"), ("ON", "C1", "C0"),
+             ("CLEAR", "C1"), ("CLEAR", "C2"), ("AT", "P", "D"), ("AT", "C0", "D"), ("AT", "C1", "D"),
+             ("AT", "H1", "D"), ("AT", "H2", "E")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts]))
+    difference = Difference([Clause([(False, ("CLEAR", "P"))]),
+                             Clause([(False, ("LIFTING", "H2", "C1"))])])
+    bound = AddListRelevance(model_bindings=True).for_problem([lift], model.initial)
+    assert sorted(str(r.operator) for r in bound.relevant(difference, model)) == [
+        "lift(H1, C0, P, D)", "lift(H2, C1, C0, pl)",
+    ]
+    # Off (the default), only the difference's literal binds.
+    assert sorted(str(r.operator) for r in _relevant(difference, [lift], model)) == [
+        "lift(H2, C1, s, pl)", "lift(h, c, P, pl)",
+    ]
