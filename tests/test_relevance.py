@@ -191,3 +191,22 @@ def test_model_bindings_bind_the_parameters_the_models_facts_settle():
     assert sorted(str(r.operator) for r in _relevant(difference, [lift], model)) == [
         "lift(H2, C1, s, pl)", "lift(h, c, P, pl)",
     ]
+
+
+def test_model_bindings_keep_rigid_atoms_matched():
+    # take(i, m) for HAVE(M): POWERON(?i) matches one fact, I2, but I2 does not support
+    # M, and SUPPORTS is rigid (no operator adds it): bound to I2 the instance could
+    # never be applied, and would be dropped. The binding is refused; joined, the
+    # instruments that support M and the one powered on have none in common, so i is
+    # left to the proof.
+    i, m = Param("i"), Param("m")
+    take = OperatorSchema(
+        "take", [i, m], And([Atomic(("SUPPORTS", i, m)), Atomic(("POWERON", i))]),
+        [("HAVE", m)], [],
+    )
+    facts = [("SUPPORTS", "I1", "M"), ("SUPPORTS", "I3", "M"), ("POWERON", "I2")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts],
+                                    rigid=frozenset({("SUPPORTS", 2)})))
+    difference = Difference([Clause([(False, ("HAVE", "M"))])])
+    bound = AddListRelevance(model_bindings=True).for_problem([take], model.initial)
+    assert [str(r.operator) for r in bound.relevant(difference, model)] == ["take(i, M)"]

@@ -196,7 +196,8 @@ class AddListIndex(Record):
     def _settled(self, instance: OperatorInstance, model: WorldModel) -> OperatorInstance:
         """``instance`` with each parameter bound that the model's facts determine: a
         precondition atom matching exactly one fact binds its parameters (unless
-        another such atom gives the parameter another value), else the atoms that
+        another such atom gives the parameter another value, or the value leaves a
+        rigid atom, which no operator makes true, matching no fact), else the atoms that
         match some fact, joined, bind a parameter they allow one value for (repeated
         while bindings come: one settles the next atom). What the model
         already holds is what the instance will use: ``lift(x, y, pallet2, p)``, pushed
@@ -239,9 +240,13 @@ class AddListIndex(Record):
                             proposed[param].add(value)
                 if matches:
                     matched.append(atom)
+            rigid = [part for part in atoms if (part[0], len(part) - 1) in self.rigid]
             for param, values in proposed.items():
-                if len(values) == 1:  # two atoms that disagree settle nothing
-                    binding[param] = next(iter(values))
+                if len(values) != 1:  # two atoms that disagree settle nothing
+                    continue
+                trial = {**binding, param: next(iter(values))}
+                if all(_first_matches(substitute(part, trial), model) for part in rigid):
+                    binding = trial
                     progress = changed = True
             if progress or not matched:
                 continue
