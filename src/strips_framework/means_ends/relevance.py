@@ -177,7 +177,13 @@ class AddListIndex(Record):
                         continue
                     instance, unifier = made
                     if self.model_bindings:
-                        instance = self._settled(instance, model)
+                        # A binding under which the instance can never be applied
+                        # settles nothing: the instance stays as the difference made it.
+                        settled = self._settled(instance, model)
+                        if settled not in judged:
+                            judged[settled] = self._judge(settled, model, protected)
+                        if judged[settled] is not None:
+                            instance = settled
                     if instance not in judged:
                         judged[instance] = self._judge(instance, model, protected)
                     verdict = judged[instance]
