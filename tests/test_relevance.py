@@ -210,3 +210,23 @@ def test_model_bindings_keep_rigid_atoms_matched():
     difference = Difference([Clause([(False, ("HAVE", "M"))])])
     bound = AddListRelevance(model_bindings=True).for_problem([take], model.initial)
     assert [str(r.operator) for r in bound.relevant(difference, model)] == ["take(i, M)"]
+
+
+def test_a_model_binding_that_makes_the_instance_never_applicable_is_not_made():
+    # take(x, y, z) for DONE(Z): HOLD(?x) matches one fact, A; then R1(A, ?y) one, B,
+    # which is refused since R2(B) matches no fact. Bound to A alone the instance would
+    # still never be applicable (no y has both R1(A, y) and R2(y), and R1, R2 are
+    # rigid), so it keeps x unbound: with C and D it can be.
+    x, y, z = Param("x"), Param("y"), Param("z")
+    take = OperatorSchema(
+        "take", [x, y, z],
+        And([Atomic(("HOLD", x)), Atomic(("R1", x, y)), Atomic(("R2", y))]),
+        [("DONE", z)], [],
+    )
+    facts = [("HOLD", "A"), ("R1", "A", "B"), ("R1", "C", "D"), ("R2", "D")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts],
+                                    rigid=frozenset({("R1", 2), ("R2", 1)})))
+    difference = Difference([Clause([(False, ("DONE", "Z"))])])
+    index = AddListRelevance(model_bindings=True, rigid_join=True).for_problem(
+        [take], model.initial)
+    assert [str(r.operator) for r in index.relevant(difference, model)] == ["take(x, y, Z)"]
