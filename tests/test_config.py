@@ -53,7 +53,7 @@ def test_string_shorthand(tmp_path):
      r"unknown key 'provr'; did you mean 'prover'\? \(expected one of: strategy, prover"),
     ("[strategy]\nmax_goal = 3\n",
      r"unknown key 'strategy.max_goal': search strategy 'means-ends' has no option 'max_goal'; "
-     r"did you mean 'max_goals'\? \(options: goal_agenda, goal_loops, max_goals\)"),
+     r"did you mean 'max_goals'\? \(options: achiever_loops, goal_agenda, goal_loops, max_goals\)"),
     ("[macrops]\ninstance = 3\n",
      r"strips.toml:2: unknown key 'macrops.instance': 'macrops' has no option 'instance'; did you mean 'instances'"),
     ("[execution]\nfailure = 2\n", r"strips.toml:2: bad value for 'execution.failure': expected a value <= 1"),

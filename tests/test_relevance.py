@@ -162,3 +162,71 @@ def test_instances_whose_rigid_atoms_with_unbound_parameters_match_no_facts_are_
     ]
     # Off (the default), only ground rigid atoms are checked: all three are kept.
     assert len(_relevant(difference, [move_up], model)) == 3
+
+
+def test_model_bindings_bind_the_parameters_the_models_facts_settle():
+    # lift(h, c, s, pl) for CLEAR(P): ON(?c, P) matches one fact (C0 is on P), which
+    # binds c, then AT(C0, ?pl) binds pl; AT(?h, D) matches four facts, but joined with
+    # HOIST(?h) only H1. For LIFTING(H2, C1), ON(C1, ?s) binds s, but AT(H2, ?pl) and
+    # AT(C1, ?pl) each match one fact with another place: pl is left to the proof.
+    # (CLEAR(?c) matches two facts; had it matched one other crate, c would stay too.)
+    h, c, s, pl = Param("h"), Param("c"), Param("s"), Param("pl")
+    lift = OperatorSchema(
+        "lift", [h, c, s, pl],
+        And([Atomic(("HOIST", h)), Atomic(("AT", h, pl)), Atomic(("AT", c, pl)),
+             Atomic(("ON", c, s)), Atomic(("CLEAR", c))]),
+        [("LIFTING", h, c), ("CLEAR", s)], [("ON", c, s), ("CLEAR", c)],
+    )
+    facts = [("HOIST", "H1"), ("HOIST", "H2"), ("ON", "C0", "P"), ("ON", "C1", "C0"),
+             ("CLEAR", "C1"), ("CLEAR", "C2"), ("AT", "P", "D"), ("AT", "C0", "D"), ("AT", "C1", "D"),
+             ("AT", "H1", "D"), ("AT", "H2", "E")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts]))
+    difference = Difference([Clause([(False, ("CLEAR", "P"))]),
+                             Clause([(False, ("LIFTING", "H2", "C1"))])])
+    bound = AddListRelevance(model_bindings=True).for_problem([lift], model.initial)
+    assert sorted(str(r.operator) for r in bound.relevant(difference, model)) == [
+        "lift(H1, C0, P, D)", "lift(H2, C1, C0, pl)",
+    ]
+    # Off (the default), only the difference's literal binds.
+    assert sorted(str(r.operator) for r in _relevant(difference, [lift], model)) == [
+        "lift(H2, C1, s, pl)", "lift(h, c, P, pl)",
+    ]
+
+
+def test_model_bindings_keep_rigid_atoms_matched():
+    # take(i, m) for HAVE(M): POWERON(?i) matches one fact, I2, but I2 does not support
+    # M, and SUPPORTS is rigid (no operator adds it): bound to I2 the instance could
+    # never be applied, and would be dropped. The binding is refused; joined, the
+    # instruments that support M and the one powered on have none in common, so i is
+    # left to the proof.
+    i, m = Param("i"), Param("m")
+    take = OperatorSchema(
+        "take", [i, m], And([Atomic(("SUPPORTS", i, m)), Atomic(("POWERON", i))]),
+        [("HAVE", m)], [],
+    )
+    facts = [("SUPPORTS", "I1", "M"), ("SUPPORTS", "I3", "M"), ("POWERON", "I2")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts],
+                                    rigid=frozenset({("SUPPORTS", 2)})))
+    difference = Difference([Clause([(False, ("HAVE", "M"))])])
+    bound = AddListRelevance(model_bindings=True).for_problem([take], model.initial)
+    assert [str(r.operator) for r in bound.relevant(difference, model)] == ["take(i, M)"]
+
+
+def test_a_model_binding_that_makes_the_instance_never_applicable_is_not_made():
+    # take(x, y, z) for DONE(Z): HOLD(?x) matches one fact, A; then R1(A, ?y) one, B,
+    # which is refused since R2(B) matches no fact. Bound to A alone the instance would
+    # still never be applicable (no y has both R1(A, y) and R2(y), and R1, R2 are
+    # rigid), so it keeps x unbound: with C and D it can be.
+    x, y, z = Param("x"), Param("y"), Param("z")
+    take = OperatorSchema(
+        "take", [x, y, z],
+        And([Atomic(("HOLD", x)), Atomic(("R1", x, y)), Atomic(("R2", y))]),
+        [("DONE", z)], [],
+    )
+    facts = [("HOLD", "A"), ("R1", "A", "B"), ("R1", "C", "D"), ("R2", "D")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts],
+                                    rigid=frozenset({("R1", 2), ("R2", 1)})))
+    difference = Difference([Clause([(False, ("DONE", "Z"))])])
+    index = AddListRelevance(model_bindings=True, rigid_join=True).for_problem(
+        [take], model.initial)
+    assert [str(r.operator) for r in index.relevant(difference, model)] == ["take(x, y, Z)"]

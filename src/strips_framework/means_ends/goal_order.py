@@ -36,6 +36,10 @@ from strips_framework.logic.formulas import And, Atomic, Formula, conjuncts
 from strips_framework.logic.terms import EQUALITY, WILDCARD, Atom, Param, Term, is_ground
 from strips_framework.logic.unify import substitute, unify
 from strips_framework.worldmodel.problem import OperatorSchema, Problem
+from strips_framework.worldmodel.world import WorldModel
+
+#: What the necessary facts of a goal are judged against: M0's facts, or a model.
+Facts = frozenset[Atom] | WorldModel
 
 #: How many achiever levels the necessary facts of a goal are collected from.
 _DEPTH = 2
@@ -91,40 +95,78 @@ def _ground_goal_atoms(goal: Formula) -> list[Atom] | None:
 
 
 def _necessary(
-    atom: Atom, operators: tuple[OperatorSchema, ...], initial: frozenset[Atom], depth: int
+    atom: Atom, operators: tuple[OperatorSchema, ...], initial: Facts, depth: int,
+    strict: bool = False,
 ) -> set[Atom]:
     """Ground atoms that hold whenever an operator adding ``atom`` is applied for the
-    first time (see the module docstring); empty when no operator adds it."""
+    first time (see the module docstring); empty when no operator adds it. ``strict``:
+    see :func:`_only_after`."""
     common: set[Atom] | None = None
     for schema, binding in _achievers(atom, operators):
         pres = [_unbound_to_variables(substitute(pre, binding), {})
                 for pre in _positive_atoms(schema.precondition)]
-        if any(_only_after(pre, atom, operators, initial) for pre in pres):
+        if any(_only_after(pre, atom, operators, initial, strict) for pre in pres):
             continue
         found: set[Atom] = {pre for pre in pres if is_ground(pre)}
         if depth > 1:
             for pre in pres:
-                found |= _necessary(pre, operators, initial, depth - 1)
+                found |= _necessary(pre, operators, initial, depth - 1, strict)
         common = found if common is None else common & found
     return common or set()
 
 
 def _only_after(
-    pre: Atom, atom: Atom, operators: tuple[OperatorSchema, ...], initial: frozenset[Atom]
+    pre: Atom, atom: Atom, operators: tuple[OperatorSchema, ...], initial: Facts,
+    strict: bool = False,
 ) -> bool:
     """Whether ``pre`` can only hold once ``atom`` has held: no M0 fact matches it and
     every operator adding it needs ``atom`` (depot's ``unload`` makes ``lifting(h, c)``
     from ``in(c, t)``, which only ``load`` adds, from ``lifting(h, c)``: the first
-    ``lifting`` of a crate on the floor comes from ``lift``, which needs it ``clear``)."""
-    if any(unify(pre, fact, {}) is not None for fact in initial if fact[0] == pre[0]):
+    ``lifting`` of a crate on the floor comes from ``lift``, which needs it ``clear``).
+    ``strict``: a need that matches ``atom`` only by giving a parameter ``pre`` leaves
+    free a value does not count: ``available(h)`` comes from dropping any crate, not
+    only after ``lifting(h, c)`` of one ``c``."""
+    if _matched(pre, initial):
         return False
     achievers = 0
     for schema, binding in _achievers(pre, operators):
         achievers += 1
         needs = (substitute(p, binding) for p in _positive_atoms(schema.precondition))
-        if not any(unify(need, atom, {}) is not None for need in needs):
+        if not any(_needs(need, atom, strict) for need in needs):
             return False
     return achievers > 0
+
+
+def _needs(need: Atom, atom: Atom, strict: bool) -> bool:
+    """Whether precondition atom ``need`` asks for ``atom`` (see :func:`_only_after`)."""
+    unifier = unify(need, atom, {})
+    if unifier is None or not strict:
+        return unifier is not None
+    return not any(
+        is_ground(substitute(term, unifier))
+        for term in need[1:] if isinstance(term, (Param, int))
+    )
+
+
+def _matched(atom: Atom, facts: Facts) -> bool:
+    """Whether a fact of ``facts`` (a set of atoms, or a world model) unifies with ``atom``."""
+    if isinstance(facts, WorldModel):
+        candidates: Iterable[Atom] = facts.facts_matching(atom)
+    else:
+        candidates = (fact for fact in facts if fact[0] == atom[0])
+    return any(unify(atom, fact, {}) is not None for fact in candidates)
+
+
+def needed_first(atom: Atom, goal: Atom, operators: tuple[OperatorSchema, ...],
+                 model: WorldModel) -> bool:
+    """Whether ``goal`` (ground) must hold before any operator can first make ``atom``
+    true from ``model``: it is in the precondition of every achiever of ``atom`` that
+    does not need ``atom`` itself (see :func:`_necessary`, one level). An instance
+    pushed to achieve ``goal`` that needs ``atom`` goes round in a circle: depot's
+    ``drop(x, crate5, z, p)``, offered for ``clear(crate5)``, needs
+    ``lifting(x, crate5)``, and a crate on a stack is lifted only once it is clear."""
+    atom = _unbound_to_variables(atom, {})
+    return not _matched(atom, model) and goal in _necessary(atom, operators, model, 1, True)
 
 
 def _inconsistent(

@@ -81,9 +81,13 @@ class AddListRelevance(Configurable):
         Option("rigid_join", bool, False,
                doc="also drop instances whose rigid precondition atoms with unbound "
                "parameters no binding maps onto M0's facts at once"),
+        Option("model_bindings", bool, False,
+               doc="bind the parameters of an instance that the model's facts allow one "
+               "value for (the crate on the pallet a lift is to clear)"),
     )
     rank: str
     rigid_join: bool
+    model_bindings: bool
 
     def for_problem(
         self, operators: Sequence[OperatorSchema], initial: InitialModel
@@ -99,7 +103,7 @@ class AddListRelevance(Configurable):
         )
         return AddListIndex(
             _add_atoms_by_predicate(operators), initial.rigid, concluded, self.rank == "cost",
-            WorldModel(initial) if self.rigid_join else None,
+            WorldModel(initial) if self.rigid_join else None, self.model_bindings,
         )
 
 
@@ -116,9 +120,12 @@ class AddListIndex(Record):
     concluded: frozenset[tuple[str, int]]
     by_cost: bool
     root: WorldModel | None
+    model_bindings: bool
     unmatched: dict[tuple[Atom, ...], bool]
+    settled: dict[tuple[WorldModel, OperatorInstance], OperatorInstance]
 
-    __slots__ = ("by_cost", "by_predicate", "concluded", "rigid", "root", "unmatched")
+    __slots__ = ("by_cost", "by_predicate", "concluded", "model_bindings", "rigid", "root",
+                 "settled", "unmatched")  # fmt: skip
 
     def __init__(
         self,
@@ -127,13 +134,16 @@ class AddListIndex(Record):
         concluded: frozenset[tuple[str, int]] = frozenset(),
         by_cost: bool = False,
         root: WorldModel | None = None,
+        model_bindings: bool = False,
     ) -> None:
         self.by_predicate = by_predicate
         self.rigid = rigid
         self.concluded = concluded
         self.by_cost = by_cost
         self.root = root
+        self.model_bindings = model_bindings
         self.unmatched = {}
+        self.settled = {}
 
     def relevant(self, difference: Difference, model: WorldModel) -> list[RelevantInstance]:
         """The relevant instances, ranked. When no instance binds all its parameters
@@ -166,6 +176,14 @@ class AddListIndex(Record):
                     if made is None:
                         continue
                     instance, unifier = made
+                    if self.model_bindings:
+                        # A binding under which the instance can never be applied
+                        # settles nothing: the instance stays as the difference made it.
+                        settled = self._settled(instance, model)
+                        if settled not in judged:
+                            judged[settled] = self._judge(settled, model, protected)
+                        if judged[settled] is not None:
+                            instance = settled
                     if instance not in judged:
                         judged[instance] = self._judge(instance, model, protected)
                     verdict = judged[instance]
@@ -180,6 +198,68 @@ class AddListIndex(Record):
                     if known is None or key < known[0]:
                         ranked[found.operator] = (key, found)
         return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
+
+    def _settled(self, instance: OperatorInstance, model: WorldModel) -> OperatorInstance:
+        """``instance`` with each parameter bound that the model's facts determine: a
+        precondition atom matching exactly one fact binds its parameters (unless
+        another such atom gives the parameter another value, or the value leaves a
+        rigid atom, which no operator makes true, matching no fact), else the atoms that
+        match some fact, joined, bind a parameter they allow one value for (repeated
+        while bindings come: one settles the next atom). What the model
+        already holds is what the instance will use: ``lift(x, y, pallet2, p)``, pushed
+        to clear pallet2, is about the crate that is on it, ``on(y, pallet2)``, at that
+        crate's place, with the hoist there. Left unbound, its subgoal's difference
+        offers to make some other crate sit on the pallet or become clear, and those
+        subgoals loop back through the lift below them. Atoms no fact matches are what
+        the subgoal must achieve, left out; atoms of predicates a rule concludes are
+        not looked at (the fact index does not decide them). Kept per model and
+        instance: nodes of one model share most instances, whatever their differences."""
+        key = (model, instance)
+        known = self.settled.get(key)
+        if known is None:
+            if len(self.settled) >= _SETTLED_KEPT:
+                self.settled.clear()
+            known = self.settled[key] = self._settle(instance, model)
+        return known
+
+    def _settle(self, instance: OperatorInstance, model: WorldModel) -> OperatorInstance:
+        binding = instance.binding_map()
+        atoms = [
+            part for part in _conjunct_atoms(instance.schema.precondition)
+            if (part[0], len(part) - 1) not in self.concluded
+        ]
+        changed = False
+        progress = True
+        while progress:
+            progress = False
+            matched: list[Atom] = []
+            proposed: dict[Param, set[Term]] = defaultdict(set)
+            for part in atoms:
+                atom = substitute(part, binding)
+                if not params_of(atom):
+                    continue
+                matches = _first_matches(atom, model)
+                if len(matches) == 1:
+                    for param in params_of(atom):
+                        value = substitute(param, matches[0])
+                        if is_ground(value):
+                            proposed[param].add(value)
+                if matches:
+                    matched.append(atom)
+            rigid = [part for part in atoms if (part[0], len(part) - 1) in self.rigid]
+            for param, values in proposed.items():
+                if len(values) != 1:  # two atoms that disagree settle nothing
+                    continue
+                trial = {**binding, param: next(iter(values))}
+                if all(_first_matches(substitute(part, trial), model) for part in rigid):
+                    binding = trial
+                    progress = changed = True
+            if progress or not matched:
+                continue
+            for param, value in _join_values(model, matched).items():
+                binding[param] = value
+                progress = changed = True
+        return instance.bind(binding) if changed else instance
 
     def _never_applicable(self, instance: OperatorInstance, model: WorldModel) -> bool:
         """Whether the rigid conjuncts of the instance's precondition can never hold: a
@@ -222,6 +302,60 @@ class AddListIndex(Record):
             return None
         missing = _missing_preconditions(instance, model, self.concluded) if self.by_cost else 0
         return missing, _deleted_count(instance, protected)
+
+
+def _first_matches(atom: Atom, model: WorldModel) -> list[dict]:
+    """The unifiers of ``atom`` with ``model``'s facts, up to the second: whether it
+    matches none, one or more is all :meth:`AddListIndex._settle` asks."""
+    found: list[dict] = []
+    for fact in model.facts_matching(atom):
+        unifier = unify(atom, fact, {})
+        if unifier is not None:
+            found.append(unifier)
+            if len(found) == 2:
+                break
+    return found
+
+
+#: How many (model, instance) pairs :meth:`AddListIndex._settled` remembers at most.
+_SETTLED_KEPT = 200_000
+#: Unifications the join of :func:`_join_values` may try before it gives up.
+_JOIN_BUDGET = 2_000
+
+
+def _join_values(model: WorldModel, atoms: list[Atom]) -> dict[Param, Term]:
+    """The parameters of ``atoms`` that every joint match of them onto ``model``'s facts
+    binds to one and the same value (none when there is no match, or the join runs
+    past its budget before it is done)."""
+    values: dict[Param, set[Term]] = {param: set() for atom in atoms for param in params_of(atom)}
+    left = _JOIN_BUDGET
+
+    def extend(rest: list[Atom], binding: dict) -> bool:
+        """False once the join cannot settle anything (budget spent, or every
+        parameter has two values)."""
+        nonlocal left
+        if not rest:
+            for param, seen in values.items():
+                seen.add(substitute(param, binding))
+            return any(len(seen) < 2 for seen in values.values())
+        scored = [(list(model.facts_matching(substitute(a, binding))), a) for a in rest]
+        candidates, chosen = min(scored, key=lambda pair: len(pair[0]))
+        others = [a for a in rest if a is not chosen]
+        for fact in candidates:
+            left -= 1
+            if left < 0:
+                return False
+            extended = unify(chosen, fact, dict(binding))
+            if extended is not None and not extend(others, extended):
+                return False
+        return True
+
+    if not extend(atoms, {}) or left < 0:
+        return {}
+    return {
+        param: next(iter(seen)) for param, seen in values.items()
+        if len(seen) == 1 and is_ground(next(iter(seen)))
+    }
 
 
 def _add_atoms_by_predicate(

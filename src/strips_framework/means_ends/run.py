@@ -16,6 +16,7 @@ from strips_framework.means_ends.components import (
     RelevanceFilter,
     evaluator_for_problem,
 )
+from strips_framework.means_ends.goal_order import needed_first
 from strips_framework.means_ends.goal_prover import GoalProver
 from strips_framework.means_ends.node import Difference, Goal, Node, RelevantInstance
 from strips_framework.means_ends.tree import SearchTree
@@ -45,6 +46,7 @@ class MeansEndsRun:
         max_nodes: int | None = None,
         distinct_plans: bool = False,
         goal_loops: bool = False,
+        achiever_loops: bool = False,
     ) -> None:
         self.max_goals = max_goals
         self.goal_prover = goal_prover
@@ -69,6 +71,9 @@ class MeansEndsRun:
         self.max_nodes = max_nodes
         self.distinct_plans = distinct_plans
         self.goal_loops = goal_loops
+        self.achiever_loops = achiever_loops
+        self.operators = tuple(problem.operators)
+        self.first_needs: dict[tuple[Atom, Atom, WorldModel], bool] = {}
 
     def solutions(self) -> Iterator[Node]:
         """The goal nodes of the search, in the order found: asked for another, the
@@ -198,13 +203,44 @@ class MeansEndsRun:
             self.analysed[key] = (node.difference, relevant)
         on_goal_list = {goal.operator for goal in node.goals}
         looping = self._looping_atoms(node) if self.goal_loops else set()
+        wanted = self._wanted_atoms(node) if self.achiever_loops else set()
         node.pending = [
             found for found in relevant
             if found.operator not in on_goal_list
             and (not looping or looping.isdisjoint(atoms_of(found.operator.precondition())))
+            and (not wanted or not self._needs_first(found.operator, wanted, node.model))
         ]
         if node.pending:
             self._push(node)
+
+    def _wanted_atoms(self, node: Node) -> set[Atom]:
+        """The ground atoms of the node's first goal that its model lacks: what a
+        relevant instance for it is there to add."""
+        return {
+            atom for atom in atoms_of(node.goals[0].formula)
+            if is_ground(atom) and not node.model.holds(atom)
+        }
+
+    def _needs_first(
+        self, instance: OperatorInstance, wanted: set[Atom], model: WorldModel
+    ) -> bool:
+        """Whether ``instance`` needs, before it can add an atom of ``wanted``, an atom
+        that only that wanted atom lets an operator make (``achiever_loops``): its
+        subgoal would go round in a circle, two levels deep, where ``goal_loops`` looks
+        one level deep. ``drop(x, crate5, z, p)``, offered for ``clear(crate5)``, needs
+        ``lifting(x, crate5)``, and a crate on a stack is only lifted once it is clear
+        (:func:`~strips_framework.means_ends.goal_order.needed_first`)."""
+        adds = [atom for atom in instance.effects()[1] if atom in wanted]
+        for atom in adds:
+            for need in atoms_of(instance.precondition()):
+                key = (need, atom, model)
+                known = self.first_needs.get(key)
+                if known is None:
+                    known = self.first_needs[key] = needed_first(
+                        need, atom, self.operators, model)
+                if known:
+                    return True
+        return False
 
     def _looping_atoms(self, node: Node) -> set[Atom]:
         """What a subgoal pushed at ``node`` must not need: the ground atoms that the

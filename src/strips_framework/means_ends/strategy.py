@@ -35,7 +35,9 @@ class MeansEndsSearch(Configurable):
     ``max_goals`` bounds the goal list (the depth of subgoaling), which keeps the search
     from regressing forever through ever deeper preconditions. ``goal_loops`` drops a
     relevant instance whose precondition needs an atom that the operator of the goal
-    it would serve was pushed to add (:meth:`MeansEndsRun._looping_atoms`).
+    it would serve was pushed to add (:meth:`MeansEndsRun._looping_atoms`);
+    ``achiever_loops`` one that needs an atom no operator can make before the atom the
+    instance is offered for holds (:meth:`MeansEndsRun._needs_first`).
     """
 
     name: ClassVar[str] = "means-ends"
@@ -51,10 +53,14 @@ class MeansEndsSearch(Configurable):
                doc="achieve G0's atoms in layers by reasonable orders (goal_order.py)"),
         Option("goal_loops", bool, True,
                doc="no subgoal that needs what the operator it serves is there to add"),
+        Option("achiever_loops", bool, False,
+               doc="no subgoal that needs an atom which only the atom it is to add lets "
+               "an operator make"),
     )
     max_goals: int
     goal_agenda: bool
     goal_loops: bool
+    achiever_loops: bool
 
     def search(
         self,
@@ -79,5 +85,5 @@ class MeansEndsSearch(Configurable):
                            differences, relevance, evaluator, limits,
                            clock or Clock(limits.time),
                            planned=tuple(Goal(formula) for formula in agenda),
-                           goal_loops=self.goal_loops)
+                           goal_loops=self.goal_loops, achiever_loops=self.achiever_loops)
         return run.search()
