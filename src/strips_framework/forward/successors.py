@@ -41,6 +41,7 @@ class Successors(Protocol):
     delete: Mapping[int, int]
     add: Mapping[int, int]
     effects: Mapping[int, tuple[tuple[int, int, int, int], ...]] | None
+
     @property
     def order(self) -> Sequence[int]:
         """The operators in the order :meth:`applicable` lists them, by position."""
