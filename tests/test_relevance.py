@@ -193,6 +193,64 @@ def test_model_bindings_bind_the_parameters_the_models_facts_settle():
     ]
 
 
+def test_model_bindings_do_not_use_a_fact_the_subgoal_consumes():
+    # drop(v, p, s1, s2) for DELIVERED(P) needs IN(P, ?v), which no fact matches, and
+    # CAP(?v, ?s1) with PRED(?s1, ?s2): joined, only T2 at C1 can drop now (T1 is
+    # empty, at C2). But the pick that makes IN(P, T2) deletes CAP(T2, C1), so the drop
+    # bound to C1 could never follow it: the capacity binds nothing, and nothing else
+    # settles v. LIFTING(?h, X) has no fact either, but the lift that makes it deletes
+    # only FREE(H1): hold(h, X, pl) is still bound to the hoist at X's place.
+    v, p, s1, s2 = Param("v"), Param("p"), Param("s1"), Param("s2")
+    h, x, pl = Param("h"), Param("x"), Param("pl")
+    pick = OperatorSchema(
+        "pick", [v, p, s1, s2],
+        And([Atomic(("CAP", v, s2)), Atomic(("PRED", s1, s2))]),
+        [("IN", p, v), ("CAP", v, s1)], [("CAP", v, s2)],
+    )
+    drop = OperatorSchema(
+        "drop", [v, p, s1, s2],
+        And([Atomic(("IN", p, v)), Atomic(("CAP", v, s1)), Atomic(("PRED", s1, s2))]),
+        [("DELIVERED", p), ("CAP", v, s2)], [("IN", p, v), ("CAP", v, s1)],
+    )
+    lift = OperatorSchema("lift", [h, x], Atomic(("FREE", h)), [("LIFTING", h, x)], [("FREE", h)])
+    hold = OperatorSchema(
+        "hold", [h, x, pl],
+        And([Atomic(("HOIST", h)), Atomic(("LIFTING", h, x)), Atomic(("AT", h, pl)),
+             Atomic(("AT", x, pl))]),
+        [("HELD", x)], [],
+    )
+    facts = [("PRED", "C0", "C1"), ("PRED", "C1", "C2"), ("CAP", "T1", "C2"),
+             ("CAP", "T2", "C1"), ("FREE", "H1"), ("HOIST", "H1"), ("AT", "H1", "D"), ("AT", "X", "D")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts],
+                                    rigid=frozenset({("PRED", 2), ("HOIST", 1)})))
+    difference = Difference([Clause([(False, ("DELIVERED", "P"))]),
+                             Clause([(False, ("HELD", "X"))])])
+    index = AddListRelevance(model_bindings=True).for_problem([pick, drop, lift, hold],
+                                                              model.initial)
+    assert sorted(str(r.operator) for r in index.relevant(difference, model)) == [
+        "drop(v, P, s1, s2)", "hold(H1, X, D)",
+    ]
+
+
+def test_model_bindings_rank_by_the_deletes_they_bind():
+    # For DONE: fix(k) is bound by the model (SEL(K1) is the one fact) and deletes
+    # KEEP(K1), which the goal rests on; make(m) stays unbound (no fact NEED) and its
+    # KEEP(?m) names no fact yet. With model bindings only deletes that are bound count,
+    # so make comes first; without, KEEP(?m) counts as deleting both KEEP facts.
+    k, m = Param("k"), Param("m")
+    fix = OperatorSchema("fix", [k], Atomic(("SEL", k)), [("DONE",)], [("KEEP", k)])
+    make = OperatorSchema("make", [m], Atomic(("NEED", m)), [("DONE",)], [("KEEP", m)])
+    facts = [("SEL", "K1"), ("KEEP", "K1"), ("KEEP", "K2")]
+    model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts]))
+    goal = Clause([(False, ("DONE",)), (False, ("KEEP", "K1")), (False, ("KEEP", "K2"))])
+    difference = Difference([Clause([(False, ("DONE",))])], [goal])
+    bound = AddListRelevance(model_bindings=True).for_problem([fix, make], model.initial)
+    assert [str(r.operator) for r in bound.relevant(difference, model)] == ["make(m)", "fix(K1)"]
+    assert [str(r.operator) for r in _relevant(difference, [fix, make], model)] == [
+        "fix(k)", "make(m)",
+    ]
+
+
 def test_model_bindings_keep_rigid_atoms_matched():
     # take(i, m) for HAVE(M): POWERON(?i) matches one fact, I2, but I2 does not support
     # M, and SUPPORTS is rigid (no operator adds it): bound to I2 the instance could

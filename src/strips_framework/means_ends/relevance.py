@@ -122,7 +122,7 @@ class AddListIndex(Record):
     root: WorldModel | None
     model_bindings: bool
     unmatched: dict[tuple[Atom, ...], bool]
-    settled: dict[tuple[WorldModel, OperatorInstance], OperatorInstance]
+    settled: dict[tuple[WorldModel, OperatorInstance, bool], OperatorInstance]
 
     __slots__ = ("by_cost", "by_predicate", "concluded", "model_bindings", "rigid", "root",
                  "settled", "unmatched")  # fmt: skip
@@ -199,7 +199,9 @@ class AddListIndex(Record):
                         ranked[found.operator] = (key, found)
         return [found for _, found in sorted(ranked.values(), key=lambda item: item[0])]
 
-    def _settled(self, instance: OperatorInstance, model: WorldModel) -> OperatorInstance:
+    def _settled(
+        self, instance: OperatorInstance, model: WorldModel, checked: bool = True
+    ) -> OperatorInstance:
         """``instance`` with each parameter bound that the model's facts determine: a
         precondition atom matching exactly one fact binds its parameters (unless
         another such atom gives the parameter another value, or the value leaves a
@@ -212,22 +214,35 @@ class AddListIndex(Record):
         offers to make some other crate sit on the pallet or become clear, and those
         subgoals loop back through the lift below them. Atoms no fact matches are what
         the subgoal must achieve, left out; atoms of predicates a rule concludes are
-        not looked at (the fact index does not decide them). Kept per model and
-        instance: nodes of one model share most instances, whatever their differences."""
-        key = (model, instance)
+        not looked at (the fact index does not decide them).
+
+        With ``checked``, a fact that achieving those atoms would delete binds nothing
+        (:meth:`_consumed`): the subgoal changes the model before the instance is
+        applied. Kept per model and instance: nodes of one model share most instances,
+        whatever their differences."""
+        key = (model, instance, checked)
         known = self.settled.get(key)
         if known is None:
             if len(self.settled) >= _SETTLED_KEPT:
                 self.settled.clear()
-            known = self.settled[key] = self._settle(instance, model)
+            atoms = [
+                part for part in _conjunct_atoms(instance.schema.precondition)
+                if (part[0], len(part) - 1) not in self.concluded
+            ]
+            known = self._settle(instance, model, atoms)
+            while checked and known is not instance:
+                consumed = self._consumed(instance, known, model, atoms)
+                if not consumed:
+                    break
+                atoms = [part for part in atoms if part not in consumed]
+                known = self._settle(instance, model, atoms)
+            self.settled[key] = known
         return known
 
-    def _settle(self, instance: OperatorInstance, model: WorldModel) -> OperatorInstance:
+    def _settle(
+        self, instance: OperatorInstance, model: WorldModel, atoms: list[Atom]
+    ) -> OperatorInstance:
         binding = instance.binding_map()
-        atoms = [
-            part for part in _conjunct_atoms(instance.schema.precondition)
-            if (part[0], len(part) - 1) not in self.concluded
-        ]
         changed = False
         progress = True
         while progress:
@@ -260,6 +275,46 @@ class AddListIndex(Record):
                 binding[param] = value
                 progress = changed = True
         return instance.bind(binding) if changed else instance
+
+    def _consumed(
+        self,
+        instance: OperatorInstance,
+        settled: OperatorInstance,
+        model: WorldModel,
+        atoms: list[Atom],
+    ) -> set[Atom]:
+        """The atoms of ``atoms`` through which ``settled`` bound a parameter of
+        ``instance`` whose fact an operator making one of its missing atoms deletes (that
+        operator bound by the missing atom, then by the model's facts, unchecked). The
+        subgoal applies that operator before the instance, so the fact is gone by then:
+        on transport, ``drop(v, l2, p, s1, s2)`` for ``at(p, l2)`` joined
+        ``capacity(v, s1)`` with the truck that can drop now, at its capacity now; but
+        it needs ``in(p, v)``, and the ``pick-up`` that makes it deletes that capacity,
+        so the drop bound that way can only be applied after a drop of its own."""
+        before = instance.binding_map()
+        after = settled.binding_map()
+        holding: dict[Atom, Atom] = {}
+        missing: list[Atom] = []
+        for part in atoms:
+            atom = substitute(part, after)
+            if not is_ground(atom):
+                if not _first_matches(atom, model):
+                    missing.append(atom)
+            elif not model.holds(atom):
+                missing.append(atom)
+            elif any(param not in before for param in params_of(part)):
+                holding[atom] = part
+        consumed: set[Atom] = set()
+        if not holding:
+            return consumed
+        for atom in missing:
+            for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
+                made = _bind(schema, renamed, add_atom, atom, True)
+                if made is None or self._never_applicable(made[0], model):
+                    continue
+                deletes, _ = self._settled(made[0], model, False).effects()
+                consumed.update(holding[fact] for fact in deletes if fact in holding)
+        return consumed
 
     def _never_applicable(self, instance: OperatorInstance, model: WorldModel) -> bool:
         """Whether the rigid conjuncts of the instance's precondition can never hold: a
@@ -301,7 +356,7 @@ class AddListIndex(Record):
         if self._never_applicable(instance, model):
             return None
         missing = _missing_preconditions(instance, model, self.concluded) if self.by_cost else 0
-        return missing, _deleted_count(instance, protected)
+        return missing, _deleted_count(instance, protected, self.model_bindings)
 
 
 def _first_matches(atom: Atom, model: WorldModel) -> list[dict]:
@@ -484,12 +539,22 @@ def _protected_facts(
     return filed
 
 
-def _deleted_count(instance: OperatorInstance, facts: dict[tuple[str, int], set[Atom]]) -> int:
+def _deleted_count(
+    instance: OperatorInstance, facts: dict[tuple[str, int], set[Atom]], bound_only: bool
+) -> int:
     """How many of ``facts`` the instance's delete list may delete (unbound parameters and
-    wildcards match anything); each pattern is tried only on the facts of its predicate."""
+    wildcards match anything); each pattern is tried only on the facts of its predicate.
+    ``bound_only`` (with model bindings) counts only patterns with no parameter left
+    unbound: an instance is then bound as far as the model settles it, and a pattern it
+    leaves unbound names no fact yet. Counted as deleting every fact it matches, it
+    would rank each instance the model cannot settle below every one it can, whatever
+    those delete: on pegsol the root offered the jumps possible at once (bound through
+    the pegs in place) before any jump its subgoal would set up."""
     patterns, _ = instance.effects()
     by_key: dict[tuple[str, int], list[Atom]] = defaultdict(list)
     for pattern in patterns:
+        if bound_only and params_of(pattern):
+            continue
         by_key[(pattern[0], len(pattern))].append(pattern)
     return sum(
         1
