@@ -212,3 +212,47 @@ def test_an_achiever_whose_static_literal_no_fact_matches_is_no_short_plan(tmp_p
         problem = Planner.create().load(path)
         values[bool(shop)] = computed(problem).values[("use", 1)]
     assert values == {False: CRITICAL, True: DETAIL}
+
+
+
+# A crane takes a plate off whatever it sits on (the plate must be bare) and puts it
+# on a bare base. Plate D is to go onto base P, where plate C sits under plate E.
+PLATES = """\
+problem plates
+constants K C D E P Q
+primitive FREE/1 BARE/1 ON/2 HOLDS/2
+facts
+  CRANE(K), FREE(K), ON(C, P), ON(E, C), BARE(E), ON(D, Q), BARE(D)
+operator take(k, c, s)
+  pre    CRANE(k) & FREE(k) & ON(c, s) & BARE(c)
+  delete FREE(k), BARE(c), ON(c, s)
+  add    HOLDS(k, c), BARE(s)
+operator put(k, c, s)
+  pre    CRANE(k) & HOLDS(k, c) & BARE(s)
+  delete HOLDS(k, c), BARE(s)
+  add    FREE(k), ON(c, s), BARE(c)
+goal ON(D, P)
+"""
+
+
+@pytest.mark.parametrize("goal_loops", [False, True])
+def test_refinements_push_no_goal_loops(tmp_path, goal_loops):
+    # Refining put(k, D, P), take(k, c, P) is pushed to bare P; a partial proof binds c
+    # to E (bare), leaving ON(E, P), which put(k, E, P) adds, but that put needs P bare:
+    # a goal loop, which means-ends's goal_loops check (on by default) keeps out of
+    # every level's search. (Neither search finds a plan in its nodes: plain
+    # means-ends with the defaults does not either.)
+    path = tmp_path / "plates.strips"
+    path.write_text(PLATES)
+    planner = Planner.create({"strategy": {"name": "abstrips", "goal_loops": goal_loops},
+                              "limits": {"nodes": 300}})
+    result = planner.solve(planner.load(path))
+    loops = [
+        node for node in result.tree.nodes
+        if len(node.goals) > 2 and node.goals[1].operator is not None
+        and str(node.goals[1].operator).startswith("take(")
+        and str(node.goals[1].operator).endswith(", P)")
+        and str(node.goals[0].operator).startswith("put(")
+        and str(node.goals[0].operator).endswith(", P)")
+    ]
+    assert bool(loops) is not goal_loops

@@ -56,6 +56,10 @@ class AbstripsSearch(Configurable):
     steps counting as short. ``max_goals`` bounds subgoaling as in ``means-ends``
     (counted above the refined plan's own goals). ``refinement_nodes`` is what one
     refinement may make before the level above is asked for another plan.
+    ``goal_loops`` is means-ends's check, on by default in both: at every level a
+    subgoal is not pushed when it needs what the operator it serves was pushed to add.
+    Without it, depot 03 and 04's refinements ran out of their nodes on such loops for
+    every plan the level above offered (docs/abstrips.md).
     """
 
     name: ClassVar[str] = "abstrips"
@@ -72,11 +76,15 @@ class AbstripsSearch(Configurable):
                doc="steps a plan may have and still count as short (computed criticalities)"),
         Option("refinement_nodes", int, 2000, minimum=0, exclusive_minimum=True,
                doc="nodes one refinement may make before the level above is asked again"),
+        Option("goal_loops", bool, True,
+               doc="no subgoal that needs what the operator it serves is there to add "
+               "(as means-ends's goal_loops)"),
     )
     max_goals: int
     criticality: Mapping[str, int]
     short_plan: int
     refinement_nodes: int
+    goal_loops: bool
 
     def __init__(self, **options: object) -> None:
         super().__init__(**options)
@@ -167,7 +175,7 @@ class _Refiner:
             self.relevance, self.evaluator, self.limits, self.tree.clock, tree=self.tree,
             planned=tuple(Goal(step.precondition(), step) for step in steps), parent=above,
             max_nodes=None if index == 0 else self.options.refinement_nodes,
-            distinct_plans=index < len(self.levels) - 1,
+            distinct_plans=index < len(self.levels) - 1, goal_loops=self.options.goal_loops,
         )
         tried: set[tuple[OperatorInstance, ...]] = set()
         level = self.tree.level = self.levels[index]
