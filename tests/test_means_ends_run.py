@@ -8,11 +8,13 @@ import pytest
 
 from strips_framework.formats.native import parse_problem
 from strips_framework.limits import Clock, Limits
+from strips_framework.logic.formulas import Atomic
 from strips_framework.means_ends.difference import UncompletedProofDifference
 from strips_framework.means_ends.goal_prover import GoalProver
 from strips_framework.means_ends.node import Goal, Node
 from strips_framework.means_ends.relevance import AddListRelevance
 from strips_framework.means_ends.run import MeansEndsRun
+from strips_framework.result import Status
 from strips_resolution_prover import ResolutionProver
 
 THREE_BOXES = Path(__file__).resolve().parents[1] / "examples" / "three-boxes.strips"
@@ -266,3 +268,23 @@ def test_no_subgoal_needs_what_only_the_atom_it_adds_lets_be_made(write_task):
     # cannot be how c becomes clear (a loop two levels deep; goal_loops sees one).
     assert _circles_made(write_task, achiever_loops=False)
     assert _circles_made(write_task, achiever_loops=True) == []
+
+
+@pytest.mark.parametrize("agenda_only", [True, False])
+def test_an_agenda_the_search_cannot_follow_gives_way_to_g0_alone(agenda_only):
+    """An agenda entry no operator can achieve empties the queue; as an agenda it is
+    then dropped and the search starts again from G0 alone (a second root), as a
+    refined plan's steps (ABSTRIPS, ``agenda_only`` off) are not."""
+    problem = parse_problem(THREE_BOXES.read_text(), str(THREE_BOXES))
+    limits = Limits()
+    prover = GoalProver(problem, ResolutionProver(), limits.effort)
+    run = MeansEndsRun(8, problem, prover, UncompletedProofDifference(), AddListRelevance(),
+                       _Level(), limits, Clock(limits.time),
+                       planned=(Goal(Atomic(("NEVER",))),), agenda_only=agenda_only)
+    result = run.search()
+    if agenda_only:
+        assert result.status is Status.SOLVED
+        roots = [node for node in result.tree.nodes if node.parent is None]
+        assert [len(root.goals) for root in roots] == [2, 1]
+    else:
+        assert result.status is Status.EXHAUSTED

@@ -288,3 +288,25 @@ def test_a_model_binding_that_makes_the_instance_never_applicable_is_not_made():
     index = AddListRelevance(model_bindings=True, rigid_join=True).for_problem(
         [take], model.initial)
     assert [str(r.operator) for r in index.relevant(difference, model)] == ["take(x, y, Z)"]
+
+
+def test_a_model_binding_whose_missing_atom_no_operator_can_make_is_not_made():
+    # send(r, w, s) for SENT(S): SEES(?w) matches one fact, W3, and then AT(?r, W3)
+    # one, R0. But HAVE(R0, S) is missing, and sample, the one operator that adds it,
+    # needs EQUIPPED(R0), which is rigid and false: bound to R0 the instance could
+    # never be applied (rovers 04 ended exhausted so). The instance is offered as the
+    # difference made it. With R0 equipped the binding stands.
+    r, w, s = Param("r"), Param("w"), Param("s")
+    send = OperatorSchema(
+        "send", [r, w, s],
+        And([Atomic(("AT", r, w)), Atomic(("SEES", w)), Atomic(("HAVE", r, s))]),
+        [("SENT", s)], [],
+    )
+    sample = OperatorSchema("sample", [r, s], Atomic(("EQUIPPED", r)), [("HAVE", r, s)], [])
+    rigid = frozenset({("SEES", 1), ("EQUIPPED", 1)})
+    difference = Difference([Clause([(False, ("SENT", "S"))])])
+    for equipped, expected in (("R1", "send(r, w, S)"), ("R0", "send(R0, W3, S)")):
+        facts = [("AT", "R0", "W3"), ("AT", "R1", "W2"), ("SEES", "W3"), ("EQUIPPED", equipped)]
+        model = WorldModel(InitialModel([Clause([(True, fact)]) for fact in facts], rigid=rigid))
+        index = AddListRelevance(model_bindings=True).for_problem([send, sample], model.initial)
+        assert [str(i.operator) for i in index.relevant(difference, model)] == [expected]

@@ -236,6 +236,8 @@ class AddListIndex(Record):
                     break
                 atoms = [part for part in atoms if part not in consumed]
                 known = self._settle(instance, model, atoms)
+            if known is not instance and self._stranded(instance, known, model, atoms):
+                known = instance
             self.settled[key] = known
         return known
 
@@ -315,6 +317,42 @@ class AddListIndex(Record):
                 deletes, _ = self._settled(made[0], model, False).effects()
                 consumed.update(holding[fact] for fact in deletes if fact in holding)
         return consumed
+
+    def _stranded(
+        self,
+        instance: OperatorInstance,
+        settled: OperatorInstance,
+        model: WorldModel,
+        atoms: list[Atom],
+    ) -> bool:
+        """Whether a missing atom of ``settled`` that holds a parameter the settling
+        bound has no operator that could ever make it (every one that adds it is never
+        applicable: :meth:`_never_applicable`). The model's facts chose a value the plan
+        cannot use: on rovers, ``communicate_rock_data`` for a rock sample was settled on
+        the rover at a place that sees the lander, which has no rock analysis equipment,
+        so ``have_rock_analysis`` of it can never be made, and the search ended
+        *exhausted* after 9 nodes. The instance is then offered as the difference made
+        it, its parameters left to its subgoal's proof."""
+        before = instance.binding_map()
+        after = settled.binding_map()
+        for part in atoms:
+            if all(param in before for param in params_of(part)):
+                continue  # not touched by the settling
+            atom = substitute(part, after)
+            held = model.holds(atom) if is_ground(atom) else bool(_first_matches(atom, model))
+            if held:
+                continue
+            if not any(
+                made is not None and not self._never_applicable(made[0], model)
+                for made in (
+                    _bind(schema, renamed, add_atom, atom, True)
+                    for schema, renamed, add_atom in self.by_predicate.get(
+                        (atom[0], len(atom)), ()
+                    )
+                )
+            ):
+                return True
+        return False
 
     def _never_applicable(self, instance: OperatorInstance, model: WorldModel) -> bool:
         """Whether the rigid conjuncts of the instance's precondition can never hold: a

@@ -85,5 +85,6 @@ class MeansEndsSearch(Configurable):
                            differences, relevance, evaluator, limits,
                            clock or Clock(limits.time),
                            planned=tuple(Goal(formula) for formula in agenda),
-                           goal_loops=self.goal_loops, achiever_loops=self.achiever_loops)
+                           goal_loops=self.goal_loops, achiever_loops=self.achiever_loops,
+                           agenda_only=True)
         return run.search()
