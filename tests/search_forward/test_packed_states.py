@@ -180,7 +180,8 @@ def test_states_stored_as_changes_are_given_back_whole(
     pure: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Successors filed as changes along chains longer than a checkpoint, with few
-    packings kept: each state's packing, bitset and number come back as made."""
+    packings kept, made by ``child`` from packings (as lazy search) or given as bitsets
+    (as the eager searches): each state's packing, bitset and number come back as made."""
     monkeypatch.setenv(PURE_PYTHON_SWITCH, pure)
     monkeypatch.setattr(space_module, "KEPT", 2)
     monkeypatch.setattr(space_module, "RECENT", 1)
@@ -188,21 +189,29 @@ def test_states_stored_as_changes_are_given_back_whole(
     task = without_axioms(spread(random_task(5)))
     space = StateSpace(task, packed=True)
     made = {space.add(task.init, -1, -1): task.init}
+    given: list[int] = []  # the states added as bitsets
     rng = random.Random(5)
-    for _ in range(200):
+    for step in range(300):
         parent = rng.choice(sorted(made))
         operators = space.successors.applicable(made[parent])
         if not operators:
             continue
         op = rng.choice(operators)
-        child = space.child(parent, op)
         expected = space.successor(made[parent], op)
+        if step % 2:  # as the eager searches: the bitset looked up, then added
+            if space.number(expected) is None:
+                assert expected not in made.values()
+                given.append(space.add(expected, parent, op))
+                made[given[-1]] = expected
+            continue
+        child = space.child(parent, op)
         if child is None:
             assert expected in made.values()
             continue
         assert child == pack(expected) and expected not in made.values()
         made[space.add(child, parent, op)] = expected
-    assert any(base != -1 for base in space._bases)  # changes were stored
+    changes = {number for number in made if space._bases[number] != -1}
+    assert changes & set(given) and changes - set(given)  # both ways stored changes
     for number, state in sorted(made.items(), reverse=True):
         assert space.stored(number) == pack(state)
         assert space.state(number) == state and space.number(state) == number

@@ -251,33 +251,37 @@ class StateSpace:
 
     def _add_packed(self, state: int | bytes, parent: int, operator: int) -> int:
         """:meth:`add` in a packed space: the state is filed as its change from
-        ``parent`` when :meth:`child` just made it (whole after :data:`CHECKPOINT`
-        changes in a row), else whole."""
+        ``parent`` (whole after :data:`CHECKPOINT` changes in a row) when :meth:`child`
+        just made it, or where :attr:`merges` when it is ``parent``'s successor by
+        ``operator`` (the eager searches give bitsets: the change is made again from
+        the parent's packing), else whole."""
         number = len(self._stored)
         self.parents.append(parent)
         self.operators.append(operator)
         made = self._child
         self._child = None
+        change: bytes | None = None
         if made is not None and made[0] is state and made[3] == parent:
             packed, change, code, _ = made
-            depth = self._depths[parent] + 1
-            if depth < CHECKPOINT:
-                self._stored.append(change)
-                self._bases.append(parent)
-                self._depths.append(depth)
-            else:
-                self._stored.append(packed)
-                self._bases.append(NO_PARENT)
-                self._depths.append(0)
         else:
             packed, code = self._key(state)
-            self._stored.append(packed)
-            self._bases.append(NO_PARENT)
-            self._depths.append(0)
             if not self.merges:  # lazy search asks for their parents' states
                 self._recent[number] = state  # type: ignore[assignment]
                 if len(self._recent) > RECENT:
                     self._recent.popitem(last=False)
+            elif parent != NO_PARENT:
+                step = self._step(self._packing(parent), operator, self._codes[parent])
+                if step[0] == packed:
+                    change = step[1]
+        depth = CHECKPOINT if change is None else self._depths[parent] + 1
+        if depth < CHECKPOINT:
+            self._stored.append(change)  # type: ignore[arg-type]
+            self._bases.append(parent)
+            self._depths.append(depth)
+        else:
+            self._stored.append(packed)
+            self._bases.append(NO_PARENT)
+            self._depths.append(0)
         if code in self._keys:  # another state's code (the search asked: not this state)
             self._more.setdefault(code, []).append(number)
         else:
