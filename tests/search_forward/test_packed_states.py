@@ -180,7 +180,7 @@ def test_states_stored_as_changes_are_given_back_whole(
     pure: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Successors filed as changes along chains longer than a checkpoint, with few
-    packings kept, made by ``child`` from packings (as lazy search) or given as bitsets
+    packings kept, made by ``take`` from packings (as lazy search) or given as bitsets
     (as the eager searches): each state's packing, bitset and number come back as made."""
     monkeypatch.setenv(PURE_PYTHON_SWITCH, pure)
     monkeypatch.setattr(space_module, "KEPT", 2)
@@ -204,12 +204,12 @@ def test_states_stored_as_changes_are_given_back_whole(
                 given.append(space.add(expected, parent, op))
                 made[given[-1]] = expected
             continue
-        child = space.child(parent, op)
-        if child is None:
+        number = space.take(parent, op)
+        if number < 0:
             assert expected in made.values()
             continue
-        assert child == pack(expected) and expected not in made.values()
-        made[space.add(child, parent, op)] = expected
+        assert space.stored(number) == pack(expected) and expected not in made.values()
+        made[number] = expected
     changes = {number for number in made if space._bases[number] != -1}
     assert changes & set(given) and changes - set(given)  # both ways stored changes
     for number, state in sorted(made.items(), reverse=True):

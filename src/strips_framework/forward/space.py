@@ -15,14 +15,14 @@ a state as bitsets, 4 KB packed). Either way the searches see the same states in
 same order: only their storage differs.
 
 A packed space files a state by its Zobrist code (:func:`~.packing.code_of`: its true
-facts' 63-bit codes XORed), and stores a state that :meth:`StateSpace.child` made as its
+facts' 63-bit codes XORed), and stores a state that :meth:`StateSpace.take` made as its
 change from its parent (the facts lost and gained), every :data:`CHECKPOINT`-th along a
 chain of changes whole, as the lifted space does (``lifted/space.py``). The packings of
 the last :data:`KEPT` states stored or asked for are kept; the others are rebuilt from
 their chains. The duplicate test compares packings only between states with the same
 code (a 63-bit code: mostly the same state), so it is exact.
 
-:meth:`StateSpace.child` is what lazy search asks of a stored state: its successor by an
+:meth:`StateSpace.take` is what lazy search asks of a stored state: its successor by an
 operator, unless reached before. In a packed space the successor is made as a packing,
 from its parent's (:meth:`~.successors.SuccessorGenerator.step_packed`: copies of the
 runs of facts between the operator's changes), with its change and its code from its
@@ -98,7 +98,7 @@ class StateSpace:
         self.is_goal: Callable[[int | bytes], bool] = task.is_goal  # type: ignore[assignment]
         #: The bitset of a packing.
         self.unpack: Callable[[bytes], int] = packing()[1]
-        #: Whether :meth:`child` makes a successor's packing from its parent's (a packed
+        #: Whether :meth:`take` makes a successor's packing from its parent's (a packed
         #: space without conditional effects or axioms, which need the whole state).
         self.merges = self.packed and self.successors.effects is None and self.derive is None
         if self.packed:
@@ -114,17 +114,16 @@ class StateSpace:
             #: The states whose code another state had first (by code; see :meth:`_find`).
             self._more: dict[int, list[int]] = {}
             self._recent: OrderedDict[int, int] = OrderedDict()
-            self._packings: OrderedDict[int, bytes] = OrderedDict()
+            #: The packings of the last :data:`KEPT` states stored or asked for, by
+            #: number (the searches look here before calling :attr:`stored`).
+            self.kept: OrderedDict[int, bytes] = OrderedDict()
             #: The state last packed, its packing and its code (a search asks for a
             #: state's number and then adds it: one packing for both).
             self._last: tuple[int, bytes, int] = (0, b"", 0)
-            #: The last successor :meth:`child` made: its packing, change, code and
-            #: parent, for :meth:`add` to store as that change.
-            self._child: tuple[bytes, bytes, int, int] | None = None
             self.state, self.number = self._packed_state, self._packed_number
             self.stored, self.add = self._packing, self._add_packed  # type: ignore[method-assign]
             if self.merges:
-                self.child = self._packed_child  # type: ignore[method-assign]
+                self.take = self._packed_take  # type: ignore[method-assign]
             goal = sorted(set(task.goal))
             held, goals = held_counter(goal), len(goal)
             self.is_goal = lambda state: held(state) == goals
@@ -176,13 +175,13 @@ class StateSpace:
 
     def _packing(self, number: int) -> bytes:
         """State ``number``'s packing: kept, or rebuilt from its chain (:meth:`_rebuild`)."""
-        packed = self._packings.get(number)
+        packed = self.kept.get(number)
         return self._rebuild(number) if packed is None else packed
 
     def _rebuild(self, number: int) -> bytes:
         """State ``number``'s packing rebuilt from the nearest kept or whole state of its
         chain of changes (and kept)."""
-        packings, bases = self._packings, self._bases
+        packings, bases = self.kept, self._bases
         chain = []
         at = number
         while at not in packings and bases[at] != NO_PARENT:
@@ -197,7 +196,7 @@ class StateSpace:
         return packed  # type: ignore[return-value]
 
     def _keep(self, number: int, packed: bytes) -> None:
-        packings = self._packings
+        packings = self.kept
         packings[number] = packed
         if len(packings) > KEPT:
             packings.popitem(last=False)
@@ -216,26 +215,38 @@ class StateSpace:
             result = (state ^ (state & delete)) | add
         return self.derive(result) if self.derive is not None else result
 
-    def child(self, parent: int, operator: int) -> int | bytes | None:
-        """The state ``operator`` makes of state number ``parent``, or None when it was
-        reached before: as the space stores it where :attr:`merges` (its packing, for
-        :meth:`add`, :attr:`is_goal`, the successor generator and the estimators that
-        read packings), else its bitset."""
+    def take(self, parent: int, operator: int) -> int:
+        """Number the state ``operator`` makes of state number ``parent`` (what lazy
+        search asks of a stored state), or give -1 when it was reached before. Where
+        :attr:`merges`, :attr:`stored` then gives its packing (for :attr:`is_goal`, the
+        successor generator and the estimators that read packings), else :attr:`state`
+        its bitset."""
         state = self.successor(self.state(parent), operator)
-        return state if self.number(state) is None else None
+        return -1 if self.number(state) is not None else self.add(state, parent, operator)
 
-    def _packed_child(self, parent: int, operator: int) -> bytes | None:
-        """:meth:`child` where :attr:`merges`: the packing made from the parent's, its
+    def _packed_take(self, parent: int, operator: int) -> int:
+        """:meth:`take` where :attr:`merges`: the packing made from the parent's, its
         change and its code from the operator's changes (``step_packed``), the states
-        with that code compared whole (only those)."""
-        packed = self._packings.get(parent)
+        with that code compared whole (only those), and a new state filed as its
+        change (whole after :data:`CHECKPOINT` changes in a row)."""
+        packed = self.kept.get(parent)
         made, change, code = self._step(
             self._rebuild(parent) if packed is None else packed, operator, self._codes[parent]
         )
         if code in self._keys and self._find(code, made) is not None:
-            return None
-        self._child = (made, change, code, parent)
-        return made
+            return -1
+        number = len(self._stored)
+        depth = self._depths[parent] + 1
+        if depth < CHECKPOINT:
+            self._stored.append(change)
+            self._bases.append(parent)
+            self._depths.append(depth)
+        else:
+            self._stored.append(made)
+            self._bases.append(NO_PARENT)
+            self._depths.append(0)
+        self._file(number, code, made, parent, operator)
+        return number
 
     def add(self, state: int | bytes, parent: int, operator: int) -> int:
         """Number a new state reached from state number ``parent`` by ``operator`` (its
@@ -250,29 +261,21 @@ class StateSpace:
         return number
 
     def _add_packed(self, state: int | bytes, parent: int, operator: int) -> int:
-        """:meth:`add` in a packed space: the state is filed as its change from
-        ``parent`` (whole after :data:`CHECKPOINT` changes in a row) when :meth:`child`
-        just made it, or where :attr:`merges` when it is ``parent``'s successor by
-        ``operator`` (the eager searches give bitsets: the change is made again from
-        the parent's packing), else whole."""
+        """:meth:`add` in a packed space: where :attr:`merges` a state that is
+        ``parent``'s successor by ``operator`` is filed as its change from ``parent``
+        (the eager searches give bitsets: the change is made from the parent's
+        packing), whole after :data:`CHECKPOINT` changes in a row; others whole."""
         number = len(self._stored)
-        self.parents.append(parent)
-        self.operators.append(operator)
-        made = self._child
-        self._child = None
+        packed, code = self._key(state)
         change: bytes | None = None
-        if made is not None and made[0] is state and made[3] == parent:
-            packed, change, code, _ = made
-        else:
-            packed, code = self._key(state)
-            if not self.merges:  # lazy search asks for their parents' states
-                self._recent[number] = state  # type: ignore[assignment]
-                if len(self._recent) > RECENT:
-                    self._recent.popitem(last=False)
-            elif parent != NO_PARENT:
-                step = self._step(self._packing(parent), operator, self._codes[parent])
-                if step[0] == packed:
-                    change = step[1]
+        if not self.merges:  # lazy search asks for their parents' states
+            self._recent[number] = state  # type: ignore[assignment]
+            if len(self._recent) > RECENT:
+                self._recent.popitem(last=False)
+        elif parent != NO_PARENT:
+            made, step_change, _ = self._step(self._packing(parent), operator, 0)
+            if made == packed:
+                change = step_change
         depth = CHECKPOINT if change is None else self._depths[parent] + 1
         if depth < CHECKPOINT:
             self._stored.append(change)  # type: ignore[arg-type]
@@ -282,13 +285,20 @@ class StateSpace:
             self._stored.append(packed)
             self._bases.append(NO_PARENT)
             self._depths.append(0)
+        self._file(number, code, packed, parent, operator)
+        return number
+
+    def _file(self, number: int, code: int, packed: bytes, parent: int, operator: int) -> None:
+        """Enter new state ``number`` (stored already) in the duplicate table and the
+        tree, and keep its packing."""
         if code in self._keys:  # another state's code (the search asked: not this state)
             self._more.setdefault(code, []).append(number)
         else:
             self._keys[code] = number
         self._codes.append(code)
+        self.parents.append(parent)
+        self.operators.append(operator)
         self._keep(number, packed)
-        return number
 
     def reparent(self, number: int, parent: int, operator: int) -> None:
         """Record a cheaper way to reach state ``number``."""
@@ -301,10 +311,9 @@ class StateSpace:
         self._stored.clear()
         if self.packed:
             self._recent.clear()
-            self._packings.clear()
+            self.kept.clear()
             self._more.clear()
             del self._bases[:], self._codes[:], self._depths[:]
-            self._child = None
         del self.parents[:], self.operators[:]
 
     def bytes_per_state(self) -> float:
