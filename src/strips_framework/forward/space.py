@@ -236,16 +236,7 @@ class StateSpace:
         if code in self._keys and self._find(code, made) is not None:
             return -1
         number = len(self._stored)
-        depth = self._depths[parent] + 1
-        if depth < CHECKPOINT:
-            self._stored.append(change)
-            self._bases.append(parent)
-            self._depths.append(depth)
-        else:
-            self._stored.append(made)
-            self._bases.append(NO_PARENT)
-            self._depths.append(0)
-        self._file(number, code, made, parent, operator)
+        self._store(number, code, made, change, parent, operator)
         return number
 
     def add(self, state: int | bytes, parent: int, operator: int) -> int:
@@ -276,6 +267,21 @@ class StateSpace:
             made, step_change, _ = self._step(self._packing(parent), operator, 0)
             if made == packed:
                 change = step_change
+        self._store(number, code, packed, change, parent, operator)
+        return number
+
+    def _store(
+        self,
+        number: int,
+        code: int,
+        packed: bytes,
+        change: bytes | None,
+        parent: int,
+        operator: int,
+    ) -> None:
+        """Store new state ``number``: as ``change`` (from ``parent``) if there is one
+        and the chain of changes is shorter than :data:`CHECKPOINT`, else whole; enter
+        it in the duplicate table and the tree, and keep its packing."""
         depth = CHECKPOINT if change is None else self._depths[parent] + 1
         if depth < CHECKPOINT:
             self._stored.append(change)  # type: ignore[arg-type]
@@ -285,12 +291,6 @@ class StateSpace:
             self._stored.append(packed)
             self._bases.append(NO_PARENT)
             self._depths.append(0)
-        self._file(number, code, packed, parent, operator)
-        return number
-
-    def _file(self, number: int, code: int, packed: bytes, parent: int, operator: int) -> None:
-        """Enter new state ``number`` (stored already) in the duplicate table and the
-        tree, and keep its packing."""
         if code in self._keys:  # another state's code (the search asked: not this state)
             self._more.setdefault(code, []).append(number)
         else:
