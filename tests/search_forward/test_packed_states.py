@@ -17,13 +17,24 @@ from pathlib import Path
 import pytest
 
 from strips_framework.compiled import PURE_PYTHON_SWITCH
+from strips_framework.forward import packing as packing_module
 from strips_framework.forward import space as space_module
 from strips_framework.forward.breadth_first import BreadthFirstSearch
 from strips_framework.forward.eager import AStarSearch, GreedySearch
 from strips_framework.forward.ehc import EnforcedHillClimbing
 from strips_framework.forward.lazy import LazyGreedySearch
-from strips_framework.forward.packing import held_counter, pack, packing, unpack
+from strips_framework.forward.packing import (
+    code_of,
+    codes_xor,
+    held_counter,
+    pack,
+    packing,
+    patch,
+    unpack,
+    zobrist,
+)
 from strips_framework.forward.space import SPARSE, StateSpace, stores_packed
+from strips_framework.forward.successors import successor_generator
 from strips_framework.grounding.task import (
     GroundAxiom,
     GroundEffect,
@@ -129,6 +140,100 @@ def test_a_packed_space_gives_back_the_states_it_stored(monkeypatch: pytest.Monk
     for index, state in enumerate(states):
         assert space.state(index) == state and space.number(state) == index
     assert len(space) == len(states) and space.bytes_per_state() > 0
+
+
+@pytest.mark.parametrize("compiled", [False, True])
+def test_a_successors_change_and_code_follow_from_its_parents(compiled: bool) -> None:
+    """``step_packed`` on every applicable operator of random states: the packing is
+    ``apply_packed``'s, the change turns the parent's packing into it (``patch``), and
+    the code updated by the change is the code of the successor's facts (the ground
+    truth: each fact's code XORed); compiled and reference agree."""
+    code_packing, patch_packing = zobrist(compiled)
+    for seed in range(8):
+        task = spread(random_task(seed))
+        generator = successor_generator(task, compiled)
+        reference = successor_generator(task, False)
+        rng = random.Random(seed)
+        states = [task.init] + [mask_of(tuple(rng.sample(range(len(task.facts)), 40)))]
+        for state in states:
+            packed = pack(state)
+            code = code_packing(packed)
+            assert code == code_of(packed) == codes_xor(facts_in(state))
+            for op in range(len(task.operators)):
+                made, change, made_code = generator.step_packed(packed, op, code)
+                assert (made, change, made_code) == reference.step_packed(packed, op, code)
+                assert made == generator.apply_packed(packed, op)
+                assert patch_packing(packed, change) == patch(packed, change) == made
+                assert made_code == codes_xor(facts_in(unpack(made)))
+
+
+def test_the_compiled_patch_refuses_a_change_of_another_state() -> None:
+    patch_packing = zobrist(True)[1]
+    packed = pack(mask_of((3, 40, 77)))
+    for lost, gained in (((4,), ()), ((), (40,)), ((3, 3), ()), ((3, 40, 77, 78), ())):
+        with pytest.raises(ValueError):
+            patch_packing(packed, packing_module.change_of(lost, gained))
+
+
+@pytest.mark.parametrize("pure", ["", "1"])
+def test_states_stored_as_changes_are_given_back_whole(
+    pure: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Successors filed as changes along chains longer than a checkpoint, with few
+    packings kept, made by ``take`` from packings (as lazy search) or given as bitsets
+    (as the eager searches): each state's packing, bitset and number come back as made."""
+    monkeypatch.setenv(PURE_PYTHON_SWITCH, pure)
+    monkeypatch.setattr(space_module, "KEPT", 2)
+    monkeypatch.setattr(space_module, "RECENT", 1)
+    monkeypatch.setattr(space_module, "CHECKPOINT", 3)
+    task = without_axioms(spread(random_task(5)))
+    space = StateSpace(task, packed=True)
+    made = {space.add(task.init, -1, -1): task.init}
+    given: list[int] = []  # the states added as bitsets
+    rng = random.Random(5)
+    for step in range(300):
+        parent = rng.choice(sorted(made))
+        operators = space.successors.applicable(made[parent])
+        if not operators:
+            continue
+        op = rng.choice(operators)
+        expected = space.successor(made[parent], op)
+        if step % 2:  # as the eager searches: the bitset looked up, then added
+            if space.number(expected) is None:
+                assert expected not in made.values()
+                given.append(space.add(expected, parent, op))
+                made[given[-1]] = expected
+            continue
+        number = space.take(parent, op)
+        if number < 0:
+            assert expected in made.values()
+            continue
+        assert space.stored(number) == pack(expected) and expected not in made.values()
+        made[number] = expected
+    changes = {number for number in made if space._bases[number] != -1}
+    assert changes & set(given) and changes - set(given)  # both ways stored changes
+    for number, state in sorted(made.items(), reverse=True):
+        assert space.stored(number) == pack(state)
+        assert space.state(number) == state and space.number(state) == number
+
+
+def test_states_with_the_same_code_are_told_apart(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Facts' codes made to collide (the reference's codes replaced by the fact's
+    lowest bit): lazy search on packings still expands what it expands on bitsets."""
+    monkeypatch.setenv(PURE_PYTHON_SWITCH, "1")
+    monkeypatch.setattr(packing_module, "fact_code", lambda fact: fact & 1)
+    expanded = 0
+    for seed in range(8):
+        task = without_axioms(spread(random_task(seed)))
+        outcomes = []
+        for sparse in (len(task.facts) + 1, 0):
+            monkeypatch.setattr(space_module, "SPARSE", sparse)
+            result = LazyGreedySearch().search_task(task, _MissingGoals(task), Limits(time=60))
+            s = result.statistics
+            outcomes.append((result.status, result.plan, s.expanded, s.generated, s.evaluated))
+        assert outcomes[0] == outcomes[1], seed
+        expanded += outcomes[0][2]
+    assert expanded > 30  # searches long enough to meet states with the same code
 
 
 class _MissingGoals:

@@ -134,13 +134,15 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
     task, space, budget = run.task, run.space, run.budget
     successors = space.successors
     following_of, ordered, order = successors.next_applicable, successors.ordered, successors.order
-    child, stored, add, is_goal = space.child, space.stored, space.add, space.is_goal
+    take, stored, add, is_goal = space.take, space.stored, space.add, space.is_goal
     successor, state_of, find, goal = space.successor, space.state, space.number, task.goal_mask
     packed, merges = space.packed, space.merges
+    # Where the space merges, a state's packing is mostly among those it keeps.
+    kept = space.kept.get if merges else None
     width = max(len(task.operators), 1)
     best_h = math.inf
     number = add(task.init, -1, -1)
-    state = stored(number) if merges else task.init  # as space.child gives states
+    state = stored(number) if merges else task.init  # as the loop takes states
     while True:
         h, preferred = evaluate(state)
         run.evaluated += 1
@@ -155,7 +157,7 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
                 if best_h != math.inf:  # the initial state's h only sets the mark
                     frontier.reward_progress()
                 best_h = h
-            position = following_of(stored(number), 0)
+            position = following_of(state if merges else stored(number), 0)
             if position >= 0:
                 every.push(h, number * width + position)
                 if use_preferred and preferred:
@@ -180,17 +182,20 @@ def lazy_greedy(run, evaluate, bint use_preferred, long long boost):
                 parent = entry // width
                 position = entry - parent * width
                 op = order[position]
-                following = following_of(stored(parent), position + 1)
+                found = kept(parent) if merges else None
+                following = following_of(stored(parent) if found is None else found, position + 1)
                 if following >= 0:
                     bucket.data[bucket.head] = parent * width + following
                 else:
                     every.pop()
             run.generated += 1
             if merges:
-                state = child(parent, op)
-                if state is None:
+                number = take(parent, op)
+                if number < 0:
                     continue
-            else:  # space.child's other way, without a call in between
+                state = kept(number) or stored(number)  # kept: just stored
+                break
+            else:  # space.take's other way, without a call in between
                 state = successor(state_of(parent), op)
                 if find(state) is not None:
                     continue

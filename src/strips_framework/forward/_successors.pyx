@@ -27,19 +27,21 @@ sorted numbers of its true facts, :mod:`~strips_framework.forward.packing`): the
 walks the true facts listed there and tests a precondition by binary search, so it
 costs what the state holds, not what the task has; :meth:`SuccessorGenerator.apply_packed`
 makes a successor's packing from its parent's by a merge with the operator's sorted
-deletes and adds.
+deletes and adds, and :meth:`SuccessorGenerator.step_packed` also the change (the facts
+lost and gained) and the successor's Zobrist code from its parent's.
 """
 
 from array import array
 
 from cpython.bytes cimport PyBytes_AS_STRING, PyBytes_FromStringAndSize
-from libc.stdint cimport uint32_t
+from libc.stdint cimport uint32_t, uint64_t
 from libc.string cimport memcpy
 
 from strips_framework.forward.digits cimport (
     STRIPS_DIGIT_BITS,
     __builtin_ctz,
     strips_digits,
+    strips_fact_code,
     strips_first_at_or_after,
     strips_new_int,
     strips_set_size,
@@ -230,15 +232,51 @@ cdef class SuccessorGenerator:
         self._merge(facts, count, operator, <uint32_t*> PyBytes_AS_STRING(made))
         return made
 
-    cdef Py_ssize_t _merge(self, const uint32_t* facts, Py_ssize_t count, int operator, uint32_t* out):
+    def step_packed(self, bytes packed, int operator, code):
+        """What :meth:`apply_packed` makes of ``packed``, the change from ``packed`` to
+        it (the count of facts lost, the lost and the gained facts, 4 bytes each) and
+        its Zobrist code, ``code`` (``packed``'s) XORed with the changed facts' codes:
+        the change and the code cost what the operator touches."""
+        if operator < 0 or operator >= len(self.add_start) - 1:
+            raise IndexError(f"no operator {operator}")
+        cdef Py_ssize_t count = len(packed) // 4
+        cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(packed)
+        cdef int touched = (self.add_start[operator + 1] - self.add_start[operator]
+                            + self.delete_start[operator + 1] - self.delete_start[operator])
+        cdef bytes change = PyBytes_FromStringAndSize(NULL, (touched + 1) * 4)
+        cdef uint32_t* numbers = <uint32_t*> PyBytes_AS_STRING(change)
+        cdef uint32_t* gained = numbers + 1 + (self.delete_start[operator + 1] - self.delete_start[operator])
+        cdef Py_ssize_t lost_count = 0, gained_count = 0
+        cdef bytes made = PyBytes_FromStringAndSize(NULL, self._merge(facts, count, operator, NULL) * 4)
+        self._merge(
+            facts, count, operator, <uint32_t*> PyBytes_AS_STRING(made),
+            numbers + 1, &lost_count, gained, &gained_count,
+        )
+        cdef uint64_t zobrist = <uint64_t> code
+        cdef Py_ssize_t i
+        for i in range(lost_count):
+            zobrist ^= strips_fact_code(numbers[1 + i])
+        for i in range(gained_count):
+            zobrist ^= strips_fact_code(gained[i])
+            numbers[1 + lost_count + i] = gained[i]  # after the lost ones, moved down
+        numbers[0] = <uint32_t> lost_count
+        return made, change[:(1 + lost_count + gained_count) * 4], zobrist
+
+    cdef Py_ssize_t _merge(
+        self, const uint32_t* facts, Py_ssize_t count, int operator, uint32_t* out,
+        uint32_t* lost=NULL, Py_ssize_t* lost_count=NULL,
+        uint32_t* gained=NULL, Py_ssize_t* gained_count=NULL,
+    ):
         """Write the successor's facts to ``out`` (just count them when it is NULL): the
         changes in ascending order, at each the run of facts below it copied, then the
-        added fact written or the deleted one skipped (an add wins)."""
+        added fact written or the deleted one skipped (an add wins). Given ``lost``
+        and ``gained``, the facts that the successor lacks and its parent held, and the
+        other way round, are written there (ascending) and counted."""
         cdef Py_ssize_t made = 0, read = 0, at
         cdef int add = self.add_start[operator], add_end = self.add_start[operator + 1]
         cdef int cut = self.delete_start[operator], cut_end = self.delete_start[operator + 1]
         cdef uint32_t fact
-        cdef bint adding
+        cdef bint adding, present
         while add < add_end or cut < cut_end:
             adding = cut == cut_end or (add < add_end and self.adds[add] <= self.deletes[cut])
             fact = self.adds[add] if adding else self.deletes[cut]
@@ -247,12 +285,19 @@ cdef class SuccessorGenerator:
                 memcpy(out + made, facts + read, (at - read) * sizeof(uint32_t))
             made += at - read
             read = at
-            if read < count and facts[read] == fact:
+            present = read < count and facts[read] == fact
+            if present:
                 read += 1  # present: dropped if deleted, written again if added
             if adding:
                 if out != NULL:
                     out[made] = fact
                 made += 1
+                if gained != NULL and not present:
+                    gained[gained_count[0]] = fact
+                    gained_count[0] += 1
+            elif lost != NULL and present:
+                lost[lost_count[0]] = fact
+                lost_count[0] += 1
             while add < add_end and <uint32_t> self.adds[add] == fact:  # repeats too
                 add += 1
             while cut < cut_end and <uint32_t> self.deletes[cut] == fact:

@@ -1,6 +1,6 @@
 # The declarations of digits.h and packed.h (see there) for the compiled modules that
 # read states.
-from libc.stdint cimport uint32_t
+from libc.stdint cimport uint32_t, uint64_t
 
 
 cdef extern from "digits.h":
@@ -19,3 +19,5 @@ cdef extern from *:
 cdef extern from "packed.h":
     # See packed.h: a binary search in a packing's facts.
     Py_ssize_t strips_first_at_or_after(const uint32_t* facts, Py_ssize_t low, Py_ssize_t high, uint32_t fact)
+    # See packed.h: a fact's Zobrist code.
+    uint64_t strips_fact_code(uint32_t fact)

@@ -122,9 +122,9 @@ class LazyGreedySearch(ForwardStrategy):
                 else:
                     parent, op = entry
                 run.generated += 1
-                child = space.child(parent, op)
-                if child is not None:
-                    state, number = child, space.add(child, parent, op)  # type: ignore[arg-type]
+                number = space.take(parent, op)
+                if number >= 0:
+                    state = space.stored(number) if space.merges else space.state(number)
                     break
 
 

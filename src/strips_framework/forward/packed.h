@@ -18,4 +18,13 @@ static inline ptrdiff_t strips_first_at_or_after(
     }
     return low;
 }
+
+/* A fact's Zobrist code (packing.py's fact_code): splitmix64 of its number, the top bit
+   dropped (63 bits). A function, not a table: no set-up as long as the task has facts. */
+static inline uint64_t strips_fact_code(uint32_t fact) {
+    uint64_t z = (uint64_t)fact + 0x9E3779B97F4A7C15ULL;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return (z ^ (z >> 31)) >> 1;
+}
 #endif

@@ -31,7 +31,7 @@ from typing import Protocol
 
 from strips_framework.allocation import collection_paused
 from strips_framework.compiled import compiled_module
-from strips_framework.forward.packing import pack, unpack
+from strips_framework.forward.packing import change_of, codes_xor, pack, unpack
 from strips_framework.grounding.task import GroundOperator, GroundTask, facts_in
 
 
@@ -56,6 +56,8 @@ class Successors(Protocol):
     def apply(self, state: int, operator: int) -> int: ...
 
     def apply_packed(self, packed: bytes, operator: int) -> bytes: ...
+
+    def step_packed(self, packed: bytes, operator: int, code: int) -> tuple[bytes, bytes, int]: ...
 
 
 @collection_paused()
@@ -152,6 +154,16 @@ class SuccessorGenerator:
     def apply_packed(self, packed: bytes, operator: int) -> bytes:
         """The packing of what :meth:`apply` makes of the state packed as ``packed``."""
         return pack(self.apply(unpack(packed), operator))
+
+    def step_packed(self, packed: bytes, operator: int, code: int) -> tuple[bytes, bytes, int]:
+        """What :meth:`apply_packed` makes of ``packed``, the change from ``packed`` to
+        it (:func:`~.packing.change_of`: the facts it lost and gained) and its Zobrist
+        code, given ``code``, the Zobrist code of ``packed`` (XORed with the codes of
+        the facts that changed)."""
+        state = unpack(packed)
+        made = self.apply(state, operator)
+        lost, gained = facts_in(state ^ (state & made)), facts_in(made ^ (made & state))
+        return pack(made), change_of(lost, gained), code ^ codes_xor(lost + gained)
 
     def apply(self, state: int, operator: int) -> int:
         """The state ``operator`` makes of ``state`` without its conditional effects
