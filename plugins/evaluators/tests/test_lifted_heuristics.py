@@ -293,3 +293,34 @@ def test_instances_dearer_than_the_goal_are_not_completed(tmp_path):
     assert ("w",) not in cost
     cost, _ = explorer.costs(frozenset({("a",)}), additive=True, until=())
     assert cost[("w",)] == 3
+
+
+NO_INSTANCE_DOMAIN = """(define (domain no-instance)
+  (:requirements :typing)
+  (:types mol metal - object)
+  (:predicates (p ?x - mol) (q ?x - mol ?y - mol) (has ?m - metal) (catalyst ?c - object)
+               (done ?x - mol))
+  (:action react-with-metal :parameters (?x ?y - mol ?m - metal)
+    :precondition (and (p ?x) (p ?y) (has ?m)) :effect (and (q ?x ?y) (not (p ?x))))
+  (:action react-with-catalyst :parameters (?x ?y - mol ?c)
+    :precondition (and (p ?x) (p ?y) (catalyst ?c)) :effect (q ?y ?x))
+  (:action finish :parameters (?x ?y - mol)
+    :precondition (and (p ?x) (p ?y)) :effect (and (done ?x) (not (p ?y)))))"""
+
+
+def test_actions_without_instances_add_no_rules(tmp_path):
+    """Both reactions fall into parts (one per molecule and one for the metal or the
+    catalyst), but no state has an instance of either: the task has no metal, and no
+    catalyst fact (a static predicate). Their parts are not explored for nothing: no rule
+    comes from them, and the values are still the ground heuristics'."""
+    (tmp_path / "domain.pddl").write_text(NO_INSTANCE_DOMAIN)
+    (tmp_path / "problem.pddl").write_text(
+        "(define (problem p) (:domain no-instance) (:objects a b c - mol)"
+        " (:init (p a) (p b) (p c)) (:goal (and (done a) (done b))))"
+    )
+    task = load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl")
+    program = Program(task)
+    assert [(program.action_names[rule.action], rule.action) for rule in program.rules] == [
+        ("finish", 2)
+    ]
+    compare(task, 20)

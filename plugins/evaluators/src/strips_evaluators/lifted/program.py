@@ -596,6 +596,11 @@ class Program(RuleProgram):
         apart) is kept whole. The relaxed plan rebuilds the full action instance from the parts'
         supporters (:func:`.exploration.expand`)."""
         everything = params + clause.params
+        if self._without_instances(clause, everything):
+            # Its parts would be explored for nothing: organic synthesis has actions over
+            # halogens or chromium in tasks without such atoms, whose other parts (a
+            # molecule each) reach tens of thousands of auxiliary atoms in a state.
+            return
         kinds = {p.name: p for p in everything}
         parent = {name: name for name in kinds}
 
@@ -717,6 +722,16 @@ class Program(RuleProgram):
                 main, params, tuple(adds), action, operator, cost, line, identity,
                 hidden=frozenset(hidden), parts=parts,
             )  # fmt: skip
+
+    def _without_instances(self, clause: Clause, variables: tuple[Parameter, ...]) -> bool:
+        """True when no state has an instance of a rule for ``clause``: a variable's type
+        has no object, or a static predicate of its body has no fact."""
+        if any(not self.objects_of(variable.types) for variable in variables):
+            return True
+        return any(
+            atom.predicate in self.static and not self.static_facts[atom.predicate]
+            for atom in clause.positive
+        )
 
     def _action_cost(self, action: Action) -> int | Atom:
         """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
