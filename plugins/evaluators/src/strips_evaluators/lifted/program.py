@@ -38,6 +38,13 @@ from strips_framework.records import Record
 GOAL: GroundAtom = ("@goal",)
 #: ``Rule.action`` of a rule that comes from a derived predicate or the goal.
 AXIOM = -1
+#: The most pairs of body atoms in different parts that may match one fact for which a
+#: rule is still split (:meth:`Program._add_split`): each pair adds a rule with the two
+#: atoms unified, and those rules' own pairs more, up to 2 ** pairs rules. On
+#: organic-synthesis-MIT the splits pay up to 8 pairs (p17's Claisen condensation has
+#: 7); an enolate alkylation with 41 makes a thousand rules, slower to explore than the
+#: whole rule's joins.
+MAX_SHARED_PAIRS = 8
 
 
 class Check(Record):
@@ -659,10 +666,10 @@ class Program(RuleProgram):
             and not apart(first, second)
         ]  # fmt: skip
         variants = [self._unified(clause, heads, cost, kinds, pair) for pair in overlapping]
-        if None in variants:
-            # The parts could share a fact, which the rule counts once, and the rule
-            # for such instances cannot be written: keep it whole (joined as one part,
-            # they enumerate the product of their matches).
+        if None in variants or len(variants) > MAX_SHARED_PAIRS:
+            # The parts could share a fact, which the rule counts once, and the rules
+            # for such instances cannot be written or would be too many: keep it whole
+            # (joined as one part, they enumerate the product of their matches).
             self._add(clause, params, heads, action, operator, cost, line, identity, aliases=aliases)
             return
         # Split anyway: an instance whose parts share a fact costs the split rule that
