@@ -293,3 +293,64 @@ def test_instances_dearer_than_the_goal_are_not_completed(tmp_path):
     assert ("w",) not in cost
     cost, _ = explorer.costs(frozenset({("a",)}), additive=True, until=())
     assert cost[("w",)] == 3
+
+
+NO_INSTANCE_DOMAIN = """(define (domain no-instance)
+  (:requirements :typing)
+  (:types mol metal - object)
+  (:predicates (p ?x - mol) (q ?x - mol ?y - mol) (has ?m - metal) (catalyst ?c - object)
+               (done ?x - mol))
+  (:action finish :parameters (?x ?y - mol)
+    :precondition (and (p ?x) (p ?y)) :effect (and (done ?x) (not (p ?y))))
+  %s)"""
+REACTIONS = """
+  (:action react-with-metal :parameters (?x ?y - mol ?m - metal)
+    :precondition (and (p ?x) (p ?y) (has ?m)) :effect (and (q ?x ?y) (not (p ?x))))
+  (:action react-with-catalyst :parameters (?x ?y - mol ?c)
+    :precondition (and (p ?x) (p ?y) (catalyst ?c)) :effect (q ?y ?x))"""
+
+
+def test_actions_without_instances_add_no_rules(tmp_path):
+    """Both reactions fall into parts (one per molecule and one for the metal or the
+    catalyst), but no state has an instance of either: the task has no metal, and no
+    catalyst fact (a static predicate). Their parts are not explored for nothing: the
+    program has the rules of the same task without them, and the values are still the
+    ground heuristics'."""
+    programs = []
+    for reactions in (REACTIONS, ""):
+        (tmp_path / "domain.pddl").write_text(NO_INSTANCE_DOMAIN % reactions)
+        (tmp_path / "problem.pddl").write_text(
+            "(define (problem p) (:domain no-instance) (:objects a b c - mol)"
+            " (:init (p a) (p b) (p c)) (:goal (and (done a) (done b))))"
+        )
+        task = load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl")
+        programs.append(Program(task))
+        compare(task, 20)
+    with_reactions, without = programs
+    assert len(with_reactions.rules) == len(without.rules)
+    assert {rule.action for rule in with_reactions.rules} == {AXIOM, 0}  # finish
+
+
+SHARED_FACT_DOMAIN = """(define (domain shared-fact)
+  (:predicates (a ?x) (p ?x) (g))
+  (:action make-p :parameters (?x) :precondition (a ?x) :effect (p ?x))
+  (:action both :parameters (?x ?y) :precondition (and (p ?x) (p ?y)) :effect (g)))"""
+
+
+def test_split_rules_count_a_fact_both_parts_match_once(tmp_path):
+    """``both`` falls into two parts that can match the same ``p`` fact; its cheapest
+    instance does (x = y = o1): hadd(g) = 1 + cost(p o1) = 2, as in the ground task,
+    where the split rule alone would count (p o1) twice (3). The relaxed plan's instance
+    of the rule with the atoms unified has both arguments."""
+    (tmp_path / "domain.pddl").write_text(SHARED_FACT_DOMAIN)
+    (tmp_path / "problem.pddl").write_text(
+        "(define (problem p) (:domain shared-fact) (:objects o1 o2) (:init (a o1)) (:goal (g)))"
+    )
+    task = load_task(tmp_path / "domain.pddl", tmp_path / "problem.pddl")
+    compare(task, 10)
+    cost, _ = Exploration(Program(task)).costs(frozenset({("a", "o1")}), additive=True)
+    assert cost[("g",)] == 2
+    value, preferred = LiftedFF().for_task(task).estimate_with_preferred(
+        frozenset({("a", "o1"), ("p", "o1")})
+    )
+    assert (value, list(preferred)) == (1, [("both", ("o1", "o1"))])

@@ -389,6 +389,12 @@ def relaxed_plan(
         if support[0].parts:
             support = expand(support, supporter)
         rule, body, slots = support
+        if rule.aliases:  # the variables merged into another term take its value
+            full = list(slots)
+            for slot, other in rule.aliases:
+                full[slot] = full[other]
+            slots = tuple(full)
+            support = (rule, body, slots)
         key = (rule.number, slots)
         if key in plan:
             continue

@@ -38,6 +38,13 @@ from strips_framework.records import Record
 GOAL: GroundAtom = ("@goal",)
 #: ``Rule.action`` of a rule that comes from a derived predicate or the goal.
 AXIOM = -1
+#: The most pairs of body atoms in different parts that may match one fact for which a
+#: rule is still split (:meth:`Program._add_split`): each pair adds a rule with the two
+#: atoms unified, and those rules' own pairs more, up to 2 ** pairs rules. On
+#: organic-synthesis-MIT the splits pay up to 8 pairs (p17's Claisen condensation has
+#: 7); an enolate alkylation with 41 makes a thousand rules, slower to explore than the
+#: whole rule's joins.
+MAX_SHARED_PAIRS = 8
 
 
 class Check(Record):
@@ -183,10 +190,14 @@ class Rule(Record):
     #: ``(part slot, rule slot)`` that carry the part's binding back into this rule's
     #: slots: the part binds the variables this rule does not join over.
     parts: dict[str, tuple[tuple[int, int], ...]]
+    #: Pairs ``(slot, other)`` of a rule made by unifying two body atoms (see
+    #: :meth:`Program._add_split`): the variable of ``slot`` was merged into the term of
+    #: ``other``, so the joins leave it unbound and the relaxed plan copies it over.
+    aliases: tuple[tuple[int, int], ...]
 
     __slots__ = (
         "number", "template", "heads", "negative", "action", "arity", "operator", "identity", "cost",
-        "cost_term", "repeated_predicates", "makers", "parts",
+        "cost_term", "repeated_predicates", "makers", "parts", "aliases",
     )  # fmt: skip
 
     def __init__(
@@ -204,6 +215,7 @@ class Rule(Record):
         repeated_predicates: bool,
         makers: tuple[Callable[[list], GroundAtom], ...],
         parts: dict[str, tuple[tuple[int, int], ...]] | None = None,
+        aliases: tuple[tuple[int, int], ...] = (),
     ) -> None:
         self.number = number
         self.template = template
@@ -218,6 +230,7 @@ class Rule(Record):
         self.repeated_predicates = repeated_predicates
         self.makers = makers
         self.parts = parts or {}
+        self.aliases = aliases
 
 
 class RuleProgram:
@@ -301,16 +314,21 @@ class RuleProgram:
         hidden: frozenset[str] = frozenset(),
         parts: dict[str, tuple[tuple[int, int], ...]] | None = None,
         derivation: bool = True,
+        aliases: dict[str, str] | None = None,
     ) -> None:
         """A rule for ``clause`` (over ``params`` and its own variables) with these
         ``heads``, for ``action`` (or :data:`AXIOM`) at ``cost``: a number, or a numeric
         function term over the rule's variables (``line`` locates it in messages).
         ``hidden`` variables are bound by the auxiliary body atoms' ``parts``, not by this
         rule's joins; a rule that is not a ``derivation`` is left out of the exact
-        evaluation of derived predicates."""
+        evaluation of derived predicates. ``aliases`` maps variables merged into another
+        term (:meth:`_unified`) to that term; they are hidden too."""
         everything = params + clause.params
+        aliases = aliases or {}
+        hidden = hidden | frozenset(aliases)
         slot = {param.name: i for i, param in enumerate(everything)}
         mentioned = [arg for atom in (*clause.positive, *clause.negative, *heads) for arg in atom.args]
+        mentioned += aliases.values()
         if isinstance(cost, Atom):
             mentioned += cost.args
         for term in mentioned:
@@ -362,6 +380,7 @@ class RuleProgram:
                 for a in heads
             ),
             parts=parts,
+            aliases=tuple((slot[name], slot[term]) for name, term in aliases.items()),
         )
         self.rules.append(rule)
         atoms = [(a.predicate, tuple(slot[arg] for arg in a.args)) for a in body]
@@ -580,6 +599,8 @@ class Program(RuleProgram):
         cost: int | Atom,
         line: int | None = None,
         identity: int | None = None,
+        aliases: dict[str, str] | None = None,
+        seen: set[tuple] | None = None,
     ) -> None:
         """An action's rule, split as lifted planners split Datalog rules when its body
         falls into parts that share no variable: each part becomes an auxiliary zero-cost
@@ -596,6 +617,11 @@ class Program(RuleProgram):
         apart) is kept whole. The relaxed plan rebuilds the full action instance from the parts'
         supporters (:func:`.exploration.expand`)."""
         everything = params + clause.params
+        if self._without_instances(clause, everything):
+            # Its parts would be explored for nothing: organic synthesis has actions over
+            # halogens or chromium in tasks without such atoms, whose other parts (a
+            # molecule each) reach tens of thousands of auxiliary atoms in a state.
+            return
         kinds = {p.name: p for p in everything}
         parent = {name: name for name in kinds}
 
@@ -629,23 +655,47 @@ class Program(RuleProgram):
                     return True
             return False
 
-        for i, first in enumerate(body):
-            for second in body[i + 1:]:
-                if first.predicate != second.predicate or first.predicate in self.static:
-                    continue
-                ours = {root(t) for t in first.args if t in kinds}
-                if ours != {root(t) for t in second.args if t in kinds} and not apart(first, second):
-                    # The parts could share a fact, which the rule counts once: keep it whole
-                    # (joined as one part, they would enumerate the product of their matches).
-                    self._add(clause, params, heads, action, operator, cost, line, identity)
-                    return
+        aliases = aliases or {}
+        overlapping = [
+            (first, second)
+            for i, first in enumerate(body)
+            for second in body[i + 1:]
+            if first.predicate == second.predicate and first.predicate not in self.static
+            and {root(t) for t in first.args if t in kinds}
+            != {root(t) for t in second.args if t in kinds}
+            and not apart(first, second)
+        ]  # fmt: skip
+        variants = [self._unified(clause, heads, cost, kinds, pair) for pair in overlapping]
+        if None in variants or len(variants) > MAX_SHARED_PAIRS:
+            # The parts could share a fact, which the rule counts once, and the rules
+            # for such instances cannot be written or would be too many: keep it whole
+            # (joined as one part, they enumerate the product of their matches).
+            self._add(clause, params, heads, action, operator, cost, line, identity, aliases=aliases)
+            return
+        # Split anyway: an instance whose parts share a fact costs the split rule that
+        # fact twice, but it is also an instance of the rule with the two atoms unified,
+        # which counts it once; the cheaper of the two is the unsplit rule's cost.
+        seen = set() if seen is None else seen
+        for variant in variants:
+            if variant is False:
+                continue  # the unified atoms need equal terms that must differ
+            unified, unified_heads, unified_cost, merged = variant  # type: ignore[misc]
+            key = (action, operator, identity, unified.positive, unified.negative)
+            if key in seen:
+                continue
+            seen.add(key)
+            composed = {name: merged.get(term, term) for name, term in aliases.items()}
+            self._add_split(
+                unified, params, unified_heads, action, operator, unified_cost, line, identity,
+                aliases={**composed, **merged}, seen=seen,
+            )  # fmt: skip
         groups: dict[str | None, list[Atom]] = {}
         for atom in body:
             variables = [t for t in atom.args if t in kinds]
             groups.setdefault(root(variables[0]) if variables else None, []).append(atom)
         if sum(1 for key in groups if key is not None) < 2 or not heads:
             # One part with variables (ground atoms match one fact each): nothing to gain.
-            self._add(clause, params, heads, action, operator, cost, line, identity)
+            self._add(clause, params, heads, action, operator, cost, line, identity, aliases=aliases)
             return
         member = {name: root(name) for name in kinds}
         # The variables every head's rule needs: the cost's and those of tests across parts.
@@ -715,8 +765,67 @@ class Program(RuleProgram):
             )
             self._add(
                 main, params, tuple(adds), action, operator, cost, line, identity,
-                hidden=frozenset(hidden), parts=parts,
+                hidden=frozenset(hidden), parts=parts, aliases=aliases,
             )  # fmt: skip
+
+    def _unified(
+        self,
+        clause: Clause,
+        heads: tuple[Atom, ...],
+        cost: int | Atom,
+        kinds: dict[str, Parameter],
+        pair: tuple[Atom, Atom],
+    ) -> tuple[Clause, tuple[Atom, ...], int | Atom, dict[str, str]] | bool | None:
+        """``clause`` (with its ``heads`` and ``cost``) with the two atoms of ``pair``
+        made one: each variable merged into one term of its class (a constant, else the
+        variable whose type is within every other's), and the map of the variables
+        merged away; False when no instance exists (two constants, a type without the
+        constant, an inequality between merged terms), None when the types of a class
+        have no variable within all of them (the rule is then kept whole)."""
+        first, second = pair
+        classes: dict[str, set[str]] = {}
+        for x, y in zip(first.args, second.args):
+            merged = classes.get(x, {x}) | classes.get(y, {y})
+            for term in merged:
+                classes[term] = merged
+        rename: dict[str, str] = {}
+        for members in {id(m): m for m in classes.values()}.values():
+            if len(members) < 2:
+                continue
+            constants = [t for t in members if t not in kinds]
+            variables = [t for t in members if t in kinds]
+            domains = {v: set(self.objects_of(kinds[v].types)) for v in variables}
+            if constants:
+                target = constants[0]
+                if len(constants) > 1 or any(target not in d for d in domains.values()):
+                    return False
+            else:
+                within = [v for v in variables if all(domains[v] <= d for d in domains.values())]
+                if not within:
+                    return None
+                target = within[0]
+            rename.update((v, target) for v in variables if v != target)
+
+        def renamed(atom: Atom) -> Atom:
+            return Atom(atom.predicate, tuple(rename.get(t, t) for t in atom.args))
+
+        positive = tuple(dict.fromkeys(renamed(a) for a in clause.positive))
+        negative = tuple(renamed(a) for a in clause.negative)
+        if any(a.predicate == "=" and a.args[0] == a.args[1] for a in negative):
+            return False
+        unified = Clause(clause.params, positive, negative)
+        unified_cost = renamed(cost) if isinstance(cost, Atom) else cost
+        return unified, tuple(renamed(a) for a in heads), unified_cost, rename
+
+    def _without_instances(self, clause: Clause, variables: tuple[Parameter, ...]) -> bool:
+        """True when no state has an instance of a rule for ``clause``: a variable's type
+        has no object, or a static predicate of its body has no fact."""
+        if any(not self.objects_of(variable.types) for variable in variables):
+            return True
+        return any(
+            atom.predicate in self.static and not self.static_facts[atom.predicate]
+            for atom in clause.positive
+        )
 
     def _action_cost(self, action: Action) -> int | Atom:
         """An action's cost as a rule takes it: 1 each without ``:action-costs``."""
