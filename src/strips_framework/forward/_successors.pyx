@@ -25,10 +25,10 @@ as the state.
 a time, from a position in that order, and takes the state as its packing too (the
 sorted numbers of its true facts, :mod:`~strips_framework.forward.packing`): then it
 walks the true facts listed there and tests a precondition by binary search, so it
-costs what the state holds, not what the task has; :meth:`SuccessorGenerator.apply_packed`
+costs what the state holds, not what the task has; :meth:`SuccessorGenerator.step_packed`
 makes a successor's packing from its parent's by a merge with the operator's sorted
-deletes and adds, and :meth:`SuccessorGenerator.step_packed` also the change (the facts
-lost and gained) and the successor's Zobrist code from its parent's.
+deletes and adds, and with it the change (the facts lost and gained) and the
+successor's Zobrist code from its parent's.
 """
 
 from array import array
@@ -101,7 +101,7 @@ cdef class SuccessorGenerator:
             delete_starts.append(len(deletes))
         self.add_start, self.adds = array("i", add_starts), array("i", adds or [0])
         self.delete_start, self.deletes = array("i", delete_starts), array("i", deletes or [0])
-        for entry in range(len(operators)):  # each operator's sorted, for apply_packed's merge
+        for entry in range(len(operators)):  # each operator's sorted, for step_packed's merge
             _sort(self.adds, self.add_start[entry], self.add_start[entry + 1])
             _sort(self.deletes, self.delete_start[entry], self.delete_start[entry + 1])
         self.delete, self.add, self.effects = reference.delete, reference.add, reference.effects
@@ -219,24 +219,14 @@ cdef class SuccessorGenerator:
                 found.add(entry)
         return [self.entry_op[entry] for entry in sorted(found)]
 
-    def apply_packed(self, bytes packed, int operator):
-        """The packing of what :meth:`apply` makes of the state packed as ``packed``:
-        its facts without the operator's deletes, with its adds, in order. The runs of
-        facts between two changes are copied whole (a change's place found by binary
-        search), so a successor costs a copy of its parent's packing."""
-        if operator < 0 or operator >= len(self.add_start) - 1:
-            raise IndexError(f"no operator {operator}")
-        cdef Py_ssize_t count = len(packed) // 4
-        cdef const uint32_t* facts = <const uint32_t*> PyBytes_AS_STRING(packed)
-        cdef bytes made = PyBytes_FromStringAndSize(NULL, self._merge(facts, count, operator, NULL) * 4)
-        self._merge(facts, count, operator, <uint32_t*> PyBytes_AS_STRING(made))
-        return made
-
     def step_packed(self, bytes packed, int operator, code):
-        """What :meth:`apply_packed` makes of ``packed``, the change from ``packed`` to
-        it (the count of facts lost, the lost and the gained facts, 4 bytes each) and
-        its Zobrist code, ``code`` (``packed``'s) XORed with the changed facts' codes:
-        the change and the code cost what the operator touches."""
+        """The packing of what :meth:`apply` makes of the state packed as ``packed``
+        (its facts without the operator's deletes, with its adds, in order: the runs of
+        facts between two changes copied whole, a change's place found by binary
+        search, so a successor costs a copy of its parent's packing), the change from
+        ``packed`` to it (the count of facts lost, the lost and the gained facts, 4
+        bytes each) and its Zobrist code, ``code`` (``packed``'s) XORed with the
+        changed facts' codes: the change and the code cost what the operator touches."""
         if operator < 0 or operator >= len(self.add_start) - 1:
             raise IndexError(f"no operator {operator}")
         cdef Py_ssize_t count = len(packed) // 4

@@ -13,7 +13,7 @@ listing them all: lazy search takes a few of a large state's thousands.
 
 A state is given as an int bitset, or, where the state space stores it packed, as its
 packing (the sorted numbers of its true facts, :mod:`.packing`): the walk over a
-packing and the successor of a packing (:meth:`SuccessorGenerator.apply_packed`) cost
+packing and the successor of a packing (:meth:`SuccessorGenerator.step_packed`) cost
 what the state holds and the operator changes, not what the task has.
 
 This class is the pure-Python reference. :func:`successor_generator` gives the compiled
@@ -54,8 +54,6 @@ class Successors(Protocol):
     def ordered(self, state: int | bytes, operators: Iterable[int]) -> list[int]: ...
 
     def apply(self, state: int, operator: int) -> int: ...
-
-    def apply_packed(self, packed: bytes, operator: int) -> bytes: ...
 
     def step_packed(self, packed: bytes, operator: int, code: int) -> tuple[bytes, bytes, int]: ...
 
@@ -151,15 +149,11 @@ class SuccessorGenerator:
         found = {op for op in operators if self._operators[op].applicable(state)}
         return sorted(found, key=self.position.__getitem__)
 
-    def apply_packed(self, packed: bytes, operator: int) -> bytes:
-        """The packing of what :meth:`apply` makes of the state packed as ``packed``."""
-        return pack(self.apply(unpack(packed), operator))
-
     def step_packed(self, packed: bytes, operator: int, code: int) -> tuple[bytes, bytes, int]:
-        """What :meth:`apply_packed` makes of ``packed``, the change from ``packed`` to
-        it (:func:`~.packing.change_of`: the facts it lost and gained) and its Zobrist
-        code, given ``code``, the Zobrist code of ``packed`` (XORed with the codes of
-        the facts that changed)."""
+        """The packing of what :meth:`apply` makes of the state packed as ``packed``,
+        the change from ``packed`` to it (:func:`~.packing.change_of`: the facts it lost
+        and gained) and its Zobrist code, given ``code``, the Zobrist code of ``packed``
+        (XORed with the codes of the facts that changed)."""
         state = unpack(packed)
         made = self.apply(state, operator)
         lost, gained = facts_in(state ^ (state & made)), facts_in(made ^ (made & state))
