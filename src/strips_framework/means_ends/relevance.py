@@ -299,22 +299,16 @@ class AddListIndex(Record):
         missing: list[Atom] = []
         for part in atoms:
             atom = substitute(part, after)
-            if not is_ground(atom):
-                if not _first_matches(atom, model):
-                    missing.append(atom)
-            elif not model.holds(atom):
+            if _lacks(model, atom):
                 missing.append(atom)
-            elif any(param not in before for param in params_of(part)):
+            elif is_ground(atom) and any(param not in before for param in params_of(part)):
                 holding[atom] = part
         consumed: set[Atom] = set()
         if not holding:
             return consumed
         for atom in missing:
-            for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
-                made = _bind(schema, renamed, add_atom, atom, True)
-                if made is None or self._never_applicable(made[0], model):
-                    continue
-                deletes, _ = self._settled(made[0], model, False).effects()
+            for achiever in self._achievers(atom, model):
+                deletes, _ = self._settled(achiever, model, False).effects()
                 consumed.update(holding[fact] for fact in deletes if fact in holding)
         return consumed
 
@@ -339,20 +333,17 @@ class AddListIndex(Record):
             if all(param in before for param in params_of(part)):
                 continue  # not touched by the settling
             atom = substitute(part, after)
-            held = model.holds(atom) if is_ground(atom) else bool(_first_matches(atom, model))
-            if held:
-                continue
-            if not any(
-                made is not None and not self._never_applicable(made[0], model)
-                for made in (
-                    _bind(schema, renamed, add_atom, atom, True)
-                    for schema, renamed, add_atom in self.by_predicate.get(
-                        (atom[0], len(atom)), ()
-                    )
-                )
-            ):
+            if _lacks(model, atom) and next(self._achievers(atom, model), None) is None:
                 return True
         return False
+
+    def _achievers(self, atom: Atom, model: WorldModel) -> Iterator[OperatorInstance]:
+        """The instances that add ``atom`` (bound by it, parameters it leaves free left
+        to their proofs) that are not never applicable (:meth:`_never_applicable`)."""
+        for schema, renamed, add_atom in self.by_predicate.get((atom[0], len(atom)), ()):
+            made = _bind(schema, renamed, add_atom, atom, True)
+            if made is not None and not self._never_applicable(made[0], model):
+                yield made[0]
 
     def _never_applicable(self, instance: OperatorInstance, model: WorldModel) -> bool:
         """Whether the rigid conjuncts of the instance's precondition can never hold: a
@@ -395,6 +386,11 @@ class AddListIndex(Record):
             return None
         missing = _missing_preconditions(instance, model, self.concluded) if self.by_cost else 0
         return missing, _deleted_count(instance, protected, self.model_bindings)
+
+
+def _lacks(model: WorldModel, atom: Atom) -> bool:
+    """Whether no fact of ``model`` is ``atom`` (ground) or matches it."""
+    return not model.holds(atom) if is_ground(atom) else not _first_matches(atom, model)
 
 
 def _first_matches(atom: Atom, model: WorldModel) -> list[dict]:
@@ -519,11 +515,7 @@ def _missing_preconditions(
     for part in _conjunct_atoms(instance.schema.precondition):
         if (part[0], len(part) - 1) in concluded:
             continue  # an axiom may conclude it: no fact to look for
-        atom = substitute(part, binding)
-        if is_ground(atom):
-            missing += not model.holds(atom)
-        elif not any(unify(atom, fact, {}) is not None for fact in model.facts_matching(atom)):
-            missing += 1
+        missing += _lacks(model, substitute(part, binding))
     return missing
 
 
